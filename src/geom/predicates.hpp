@@ -1,0 +1,50 @@
+// Exact geometric predicates (adaptive precision, after Shewchuk's method; written here).
+//
+// Every function returns the exact sign of a polynomial in the input doubles, as if the
+// doubles were rationals. Stage 1 is a floating-point filter with a proven error bound
+// (filter.hpp); stage 2 is exact expansion arithmetic (expansion.hpp); the *_sos variants
+// add stage 3, symbolic perturbation (sos.cpp). Compiled with -ffp-contract=off.
+//
+// Conventions and laws (each is a RapidCheck property in tests/geom):
+//   orient2d(a,b,c)     = sign det[b-a, c-a]              > 0: a,b,c counter-clockwise.
+//   orient3d(a,b,c,d)   = sign det[b-a, c-a, d-a]         > 0: d on the side of plane abc
+//                         that (b-a)x(c-a) points to; a tet (a,b,c,d) is *positive* then.
+//   incircle(a,b,c,d)   > 0: d strictly inside the circle abc when orient2d(a,b,c) > 0.
+//   insphere(a,b,c,d,e) > 0: e strictly inside the sphere abcd when orient3d(a,b,c,d) > 0.
+//   Swapping two arguments of orient2d/orient3d/incircle (first three) /insphere (first
+//   four) negates the result; an even permutation keeps it. incircle and insphere change
+//   sign with the orientation of their first three/four points.
+//   incircle3(a,b,c,d): for coplanar a,b,c,d (precondition, unchecked beyond debug), the
+//   sign of "d strictly inside the circle through a,b,c"; orientation-free (the plane has
+//   no preferred side). Positive = inside, Negative = outside, Zero = on the circle.
+//
+// Symbolic perturbation (SoS). The lifted coordinate |p|^2 of the point of lexicographic
+// rank i (rank by lex_less over the points of one call) is raised by eps^(2^i)-style
+// infinitesimals in the manner of Devillers & Teillaud (2011), "Perturbations for Delaunay
+// and weighted Delaunay 3D triangulations". Consequences:
+//   insphere_sos(a,b,c,d,e) never returns Zero when orient3d(a,b,c,d) != 0 and e differs
+//   from a,b,c,d; it equals insphere whenever insphere != 0.
+//   incircle3_sos(a,b,c,d) never returns Zero when a,b,c are not collinear and d differs
+//   from them; it equals incircle3 whenever that is nonzero, and it is the restriction of
+//   insphere_sos to the plane, so a facet triangulation and the tetrahedralization agree.
+//   incircle_sos is the same for planar (2D) input.
+// Since the ranks come from coordinates alone, the perturbed Delaunay tetrahedralization of
+// a point set is unique: every insertion order, rank count and checker agree on it.
+#pragma once
+
+#include "geom/point.hpp"
+
+namespace pdr {
+
+Sign orient2d(const double* a, const double* b, const double* c);
+Sign incircle(const double* a, const double* b, const double* c, const double* d);
+Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d);
+Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d, const Point& e);
+Sign incircle3(const Point& a, const Point& b, const Point& c, const Point& d);
+
+Sign incircle_sos(const double* a, const double* b, const double* c, const double* d);
+Sign insphere_sos(const Point& a, const Point& b, const Point& c, const Point& d,
+                  const Point& e);
+Sign incircle3_sos(const Point& a, const Point& b, const Point& c, const Point& d);
+
+}  // namespace pdr

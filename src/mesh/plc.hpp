@@ -1,0 +1,42 @@
+// Plc: a piecewise linear complex, the input domain of paper §1.1, as read from
+// TetGen .poly/.smesh: vertices, planar polygonal facets (each a set of polygons, which
+// may include segments of two vertices and isolated points, plus facet holes), volume
+// holes (voids and cavities are marked by a point inside them) and regional attributes.
+// Line numbers are kept so validation can report file:line.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geom/point.hpp"
+
+namespace pdr {
+
+struct PlcFacet {
+  std::vector<std::vector<std::uint32_t>> polygons;  // 0-based vertex indices
+  std::vector<Point> holes;                          // points in the facet's plane
+  int marker = 0;
+  std::size_t line = 0;                              // source line of the facet header
+};
+
+struct PlcRegion {
+  Point point{};
+  double attribute = 0;
+  double max_volume = -1;  // negative: no constraint
+  std::size_t line = 0;
+};
+
+struct Plc {
+  std::string source;                  // file name, for diagnostics
+  std::vector<Point> points;
+  std::vector<std::size_t> point_lines;  // source line of each point
+  std::vector<int> point_markers;      // empty or points.size()
+  std::vector<PlcFacet> facets;
+  std::vector<Point> holes;            // volume holes
+  std::vector<std::size_t> hole_lines;
+  std::vector<PlcRegion> regions;
+};
+
+}  // namespace pdr
