@@ -1,0 +1,82 @@
+// AtomicFile; see atomic_file.hpp.
+#include "io/atomic_file.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <fcntl.h>
+#include <system_error>
+#include <unistd.h>
+
+namespace pdr::io {
+
+namespace {
+
+[[noreturn]] void throw_errno(int err, const std::string& what) {
+  throw std::system_error(err, std::generic_category(), what);
+}
+
+std::string temp_name_for(const std::string& path, unsigned attempt) {
+  static std::atomic<unsigned> counter{0};
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  return dir + "." + name + ".tmp-" + std::to_string(::getpid()) + "-" +
+         std::to_string(counter.fetch_add(1) + attempt);
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  if (path_.empty() || path_.back() == '/')
+    throw std::system_error(std::make_error_code(std::errc::invalid_argument),
+                            "cannot write '" + path_ + "': not a file name");
+  for (unsigned attempt = 0; attempt < 100; ++attempt) {
+    temp_ = temp_name_for(path_, attempt);
+    fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd_ >= 0) return;
+    if (errno != EEXIST) throw_errno(errno, "cannot create a temporary file for '" + path_ + "'");
+  }
+  throw_errno(EEXIST, "cannot create a temporary file for '" + path_ + "'");
+}
+
+AtomicFile::~AtomicFile() {
+  if (fd_ >= 0) ::close(fd_);
+  if (!committed_) ::unlink(temp_.c_str());
+}
+
+void AtomicFile::write(std::string_view bytes) {
+  if (fd_ < 0)
+    throw std::system_error(std::make_error_code(std::errc::bad_file_descriptor),
+                            "write to closed file for '" + path_ + "'");
+  while (!bytes.empty()) {
+    const ::ssize_t n = ::write(fd_, bytes.data(), bytes.size());
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw_errno(errno, "cannot write '" + path_ + "'");
+    }
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+}
+
+void AtomicFile::close() {
+  if (fd_ < 0) return;
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) throw_errno(errno, "cannot finish writing '" + path_ + "'");
+}
+
+void AtomicFile::commit() {
+  close();
+  if (committed_) return;
+  if (std::rename(temp_.c_str(), path_.c_str()) != 0)
+    throw_errno(errno, "cannot rename the finished temporary file onto '" + path_ + "'");
+  committed_ = true;
+}
+
+void commit_all(std::span<AtomicFile* const> files) {
+  for (AtomicFile* f : files) f->close();
+  for (AtomicFile* f : files) f->commit();
+}
+
+}  // namespace pdr::io

@@ -1,0 +1,49 @@
+// AtomicFile: all-or-nothing output. A writer writes into a temporary file created next to
+// the target (same directory, so rename(2) is atomic on POSIX file systems) and the target
+// appears, whole, only on commit. If the writer throws, the destructor removes the
+// temporary and the target is untouched (an older file of that name survives intact).
+//
+// Several files that belong together (TetGen .node/.ele/.face) are committed with
+// commit_all: every temporary is written and closed first; only when all succeeded are
+// they renamed, one after the other.
+//
+// Temporary names are "<dir>/.<name>.tmp-<pid>-<n>"; they are created with O_EXCL and mode
+// 0666 (less the umask), so the final file has ordinary permissions.
+// Errors are std::system_error naming the path.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace pdr::io {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path);
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile();
+
+  const std::string& path() const { return path_; }
+  const std::string& temp_path() const { return temp_; }
+
+  // Appends bytes to the temporary file.
+  void write(std::string_view bytes);
+  // Closes the temporary file, reporting any deferred write error. Idempotent.
+  void close();
+  // close(), then renames the temporary onto the target.
+  void commit();
+
+ private:
+  std::string path_;
+  std::string temp_;
+  int fd_ = -1;
+  bool committed_ = false;
+};
+
+// Closes every file, then renames every file; a failure before the renames leaves no target
+// changed (the destructors remove the temporaries).
+void commit_all(std::span<AtomicFile* const> files);
+
+}  // namespace pdr::io

@@ -1,0 +1,65 @@
+// TextSink: buffered formatting into an AtomicFile for the writers. Numbers are formatted
+// with std::to_chars: integers exactly, doubles in the shortest form that reads back to the
+// same bits (so a write/read round trip is bit-exact). The buffer is handed to the file in
+// chunks of about 1 MiB; flush() must be called before the file is committed.
+#pragma once
+
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "io/atomic_file.hpp"
+
+namespace pdr::io {
+
+class TextSink {
+ public:
+  explicit TextSink(AtomicFile& file) : file_(file) { buf_.reserve(kChunk + 256); }
+
+  TextSink& put(std::string_view s) {
+    buf_.append(s);
+    maybe_flush();
+    return *this;
+  }
+  TextSink& put(char c) {
+    buf_.push_back(c);
+    maybe_flush();
+    return *this;
+  }
+  TextSink& put_int(std::int64_t v) { return put_number(v); }
+  TextSink& put_uint(std::uint64_t v) { return put_number(v); }
+  TextSink& put_double(double v) { return put_number(v); }
+  // Raw bytes of a trivially copyable value or array (binary formats).
+  TextSink& put_bytes(const void* data, std::size_t n) {
+    buf_.append(static_cast<const char*>(data), n);
+    maybe_flush();
+    return *this;
+  }
+
+  void flush() {
+    file_.write(buf_);
+    buf_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kChunk = std::size_t{1} << 20;
+
+  template <class T>
+  TextSink& put_number(T v) {
+    char tmp[32];
+    const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);
+    buf_.append(tmp, static_cast<std::size_t>(res.ptr - tmp));
+    maybe_flush();
+    return *this;
+  }
+  void maybe_flush() {
+    if (buf_.size() >= kChunk) flush();
+  }
+
+  AtomicFile& file_;
+  std::string buf_;
+};
+
+}  // namespace pdr::io
