@@ -1,0 +1,42 @@
+// CavityBuilder::build: breadth-first search of the conflict region (cavity.hpp).
+#include "delaunay/cavity.hpp"
+
+#include <cassert>
+
+#include "delaunay/conflict.hpp"
+
+namespace pdr {
+
+void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const Point& p,
+                          TetId seed, Cavity& out) {
+  out.clear();
+  out.point = p;
+  out.seed = seed;
+  if (mark_.size() < s.slots()) mark_.resize(s.slots() + s.slots() / 2 + 64, kUnseen);
+  assert(in_conflict(s, pts, seed, p));
+  mark_[seed] = kInside;
+  out.conflict.push_back(seed);
+  // out.conflict doubles as the BFS queue: entries before i have been expanded.
+  for (std::size_t i = 0; i < out.conflict.size(); ++i) {
+    const TetId t = out.conflict[i];
+    for (int f = 0; f < 4; ++f) {
+      const TetId u = s.neighbour(t, f);
+      const std::uint8_t m = mark_[u];
+      if (m == kInside) continue;
+      if (m == kUnseen) {
+        if (in_conflict(s, pts, u, p)) {
+          mark_[u] = kInside;
+          out.conflict.push_back(u);
+          continue;
+        }
+        mark_[u] = kOutside;
+        out.ring.push_back(u);
+      }
+      out.boundary.push_back(half_face(t, f));
+    }
+  }
+  for (TetId t : out.conflict) mark_[t] = kUnseen;
+  for (TetId t : out.ring) mark_[t] = kUnseen;
+}
+
+}  // namespace pdr

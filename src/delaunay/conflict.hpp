@@ -1,0 +1,37 @@
+// in_conflict: does point p conflict with tet t (paper §1.2: p lies in t's open
+// circumsphere)? The one geometric decision of the cavity search, made only by predicates.
+//
+//   finite tet (a,b,c,d), positive:  insphere_sos(a,b,c,d,p) == Positive.
+//   ghost tet (a,b,c,ghost):         (a,b,c) is a hull face oriented out of the hull
+//                                    (tet_store.hpp). p conflicts when it is strictly
+//                                    outside, orient3d(a,b,c,p) > 0, or on the face's
+//                                    plane and incircle3_sos(a,b,c,p) == Positive.
+// A ghost tet is the limit of a finite tet whose fourth vertex runs to infinity beyond the
+// hull face, so its "circumsphere" is the open half-space outside the face plus, on the
+// plane itself, the open circumdisk of the face. Because incircle3_sos is insphere_sos
+// restricted to the plane (geom/predicates.hpp), a point on a hull plane conflicts with
+// the ghost tet exactly when it conflicts with the finite tet behind the same face; and
+// since SoS ranks points by coordinates only, the resulting tetrahedralization (hull
+// included) is the same for every insertion order.
+// Precondition: p is not a vertex of t (duplicates are filtered by the walk).
+#pragma once
+
+#include <span>
+
+#include "geom/predicates.hpp"
+#include "mesh/tet_store.hpp"
+
+namespace pdr {
+
+inline bool in_conflict(const TetStore& s, std::span<const Point> pts, TetId t,
+                        const Point& p) {
+  const VertexId* v = s.vertices(t);
+  if (v[3] == kGhostVertex) {
+    const Sign o = orient3d(pts[v[0]], pts[v[1]], pts[v[2]], p);
+    if (o != Sign::Zero) return o == Sign::Positive;
+    return incircle3_sos(pts[v[0]], pts[v[1]], pts[v[2]], p) == Sign::Positive;
+  }
+  return insphere_sos(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]], p) == Sign::Positive;
+}
+
+}  // namespace pdr

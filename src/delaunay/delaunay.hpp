@@ -1,0 +1,105 @@
+// Delaunay: an incremental Delaunay tetrahedralization of a growing point set
+// (Bowyer-Watson, paper §1.2), with the hull closed by ghost tets.
+//
+// Owns the points (vertex id = index into points()) and a TetStore. A point is first
+// added (add_point), then inserted: locate from a hint tet (walk.hpp), build the cavity
+// read-only (cavity.hpp), commit it (insert.hpp). The two-phase API (locate /
+// build_cavity / commit) is public so refinement can inspect a cavity before committing
+// it (encroachment, §3) and parallel code can drop it (§4.1).
+//
+// Invariants after every public call (the tests' audit level checks them all):
+//   - the store is topologically valid (TetStore::check_topology), every finite tet is
+//     positive, ghost tets cover the hull faces, oriented out of the hull;
+//   - the triangulation is the unique SoS-Delaunay tetrahedralization of the inserted
+//     points: no inserted point conflicts with any tet (conflict.hpp);
+//   - last_tet() is live and incident to the last inserted vertex.
+// Points added but not inserted (or reported Duplicate) belong to no tet.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "delaunay/cavity.hpp"
+#include "delaunay/insert.hpp"
+#include "delaunay/outcome.hpp"
+#include "delaunay/walk.hpp"
+#include "geom/point.hpp"
+#include "mesh/tet_store.hpp"
+
+namespace pdr {
+
+struct InsertResult {
+  Outcome outcome = Outcome::Inserted;
+  VertexId vertex = kNoVertex;  // Inserted: the new vertex; Duplicate: the existing one
+  TetId tet = kNoTet;           // a live tet incident to `vertex`: a good next hint
+};
+
+class Delaunay {
+ public:
+  Delaunay() = default;
+  explicit Delaunay(std::vector<Point> points) : points_(std::move(points)) {}
+
+  // ---- points ------------------------------------------------------------------------
+  VertexId add_point(const Point& p) {
+    points_.push_back(p);
+    return static_cast<VertexId>(points_.size() - 1);
+  }
+  std::span<const Point> points() const { return points_; }
+  const Point& point(VertexId v) const { return points_[v]; }
+  std::size_t num_points() const { return points_.size(); }
+  void reserve(std::size_t points, std::size_t tets) {
+    points_.reserve(points);
+    store_.reserve(tets);
+  }
+
+  // ---- tets --------------------------------------------------------------------------
+  const TetStore& store() const { return store_; }
+  bool empty() const { return store_.live() == 0; }
+  TetId last_tet() const { return last_; }
+  std::size_t count_finite_tets() const;
+
+  // The first tet, from four points with orient3d(a,b,c,d) != 0 (either sign: it is
+  // reordered to be positive), and its four ghost tets. Precondition: empty().
+  void init(VertexId a, VertexId b, VertexId c, VertexId d);
+
+  // ---- insertion ---------------------------------------------------------------------
+  // Walk from `hint` (kNoTet: from last_tet()). Precondition: !empty(), hint live.
+  Location locate(const Point& p, TetId hint = kNoTet);
+  // Cavity of p from a seed in conflict with p (a Location of kind InTet or OutsideHull
+  // gives one). Read-only on the triangulation.
+  void build_cavity(const Point& p, TetId seed, Cavity& out) {
+    builder_.build(store_, points_, p, seed, out);
+  }
+  // Commit a cavity built on the current triangulation for the point of vertex v.
+  // Returns a new tet incident to v.
+  TetId commit(const Cavity& c, VertexId v);
+  // All three steps. Outcome Inserted or Duplicate (then nothing changes).
+  InsertResult insert(VertexId v, TetId hint = kNoTet);
+
+  // Audit: the topological invariants (geometry is checked by the tests' oracles).
+  std::vector<std::string> check_topology() const { return store_.check_topology(); }
+
+  // Statistics of the insertions so far.
+  struct Stats {
+    std::uint64_t walk_steps = 0;
+    std::uint64_t conflict_tets = 0;
+    std::uint64_t boundary_faces = 0;
+    std::uint64_t inserted = 0;
+    std::uint64_t duplicates = 0;
+  };
+  const Stats& stats() const { return stats_; }
+
+ private:
+  std::vector<Point> points_;
+  TetStore store_;
+  CavityBuilder builder_;
+  CavityCommitter committer_;
+  Cavity cavity_;  // reused by insert()
+  WalkRng rng_;
+  TetId last_ = kNoTet;
+  Stats stats_;
+};
+
+}  // namespace pdr

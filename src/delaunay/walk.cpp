@@ -1,0 +1,74 @@
+// The remembering stochastic visibility walk (walk.hpp).
+#include "delaunay/walk.hpp"
+
+#include "geom/predicates.hpp"
+#include "mesh/tables.hpp"
+
+namespace pdr {
+
+namespace {
+
+bool same_point(const Point& a, const Point& b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+}  // namespace
+
+Location locate(const TetStore& s, std::span<const Point> pts, const Point& p, TetId start,
+                WalkRng& rng) {
+  Location out;
+  TetId t = start;
+  int entered = -1;  // face of t we came through: p is known not to lie beyond it
+  if (s.is_ghost(t)) {
+    const VertexId* v = s.vertices(t);
+    if (orient3d(pts[v[0]], pts[v[1]], pts[v[2]], p) == Sign::Positive) {
+      out.kind = Location::Kind::OutsideHull;
+      out.tet = t;
+      out.steps = 1;
+      return out;
+    }
+    const HalfFace h = s.opposite(t, 3);
+    t = tet_of(h);
+    entered = face_of(h);
+  }
+  std::uint32_t steps = 1;
+  for (;;) {
+    const VertexId* v = s.vertices(t);
+    const int first = static_cast<int>(rng.next() & 3u);
+    int crossed = -1;
+    for (int k = 0; k < 4; ++k) {
+      const int f = (first + k) & 3;
+      if (f == entered) continue;
+      const auto& fv = tables::kFaceVertex[f];
+      if (orient3d(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], p) == Sign::Positive) {
+        crossed = f;
+        break;
+      }
+    }
+    if (crossed < 0) break;
+    const HalfFace h = s.opposite(t, crossed);
+    t = tet_of(h);
+    entered = face_of(h);
+    ++steps;
+    if (s.is_ghost(t)) {
+      out.kind = Location::Kind::OutsideHull;
+      out.tet = t;
+      out.steps = steps;
+      return out;
+    }
+  }
+  out.tet = t;
+  out.steps = steps;
+  const VertexId* v = s.vertices(t);
+  for (int i = 0; i < 4; ++i) {
+    if (same_point(pts[v[i]], p)) {
+      out.kind = Location::Kind::OnVertex;
+      out.vertex = v[i];
+      return out;
+    }
+  }
+  out.kind = Location::Kind::InTet;
+  return out;
+}
+
+}  // namespace pdr

@@ -1,0 +1,131 @@
+// TetStore: the tetrahedra of a triangulation as two flat arrays of 32-bit integers.
+//
+//   v[4t+i]   vertex in slot i of tet t (local numbering: mesh/tables.hpp);
+//   adj[4t+f] the half-face on the other side of face f of tet t, encoded 4t'+f': the
+//             neighbour t' and its back face f' (accessors below; no bare shifts outside).
+//
+// 32 bytes per tet slot. The store holds no points and makes no geometric decisions.
+//
+// Invariants of a valid store (check_topology() in topology_check.cpp reports breaks):
+//   - every live tet has four distinct vertex ids; the ghost vertex may only be in slot 3;
+//   - adjacency is an involution: adj[adj[h]] == h for every live half-face h, and the
+//     two tets across a face are both live and share exactly the three face vertices, met
+//     in opposite cyclic order (the faces are consistently oriented);
+//   - no null neighbours: a ghost vertex (kGhostVertex, never a point index) closes the
+//     convex hull with ghost tets (a,b,c,ghost), whose slots (0,1,2) are the hull face
+//     oriented out of the hull;
+//   - dead slots have v[4t] == kDeadVertex and are chained in a free list through
+//     adj[4t]; create() reuses them last-in first-out (good cache locality after a
+//     Bowyer-Watson commit, which frees and refills the same slots).
+// Paper §1.2: the store is the T_i that a cavity commit turns into T_{i+1}.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pdr {
+
+using TetId = std::uint32_t;
+using VertexId = std::uint32_t;
+using HalfFace = std::uint32_t;  // 4*tet + face; build and read it with the helpers below
+
+inline constexpr VertexId kGhostVertex = 0xFFFFFFFFu;  // closes the hull; never a point
+inline constexpr VertexId kDeadVertex = 0xFFFFFFFEu;   // marks a free slot in v[4t]
+inline constexpr VertexId kNoVertex = 0xFFFFFFFDu;     // "none" in results
+inline constexpr TetId kNoTet = 0xFFFFFFFFu;
+inline constexpr HalfFace kNoHalfFace = 0xFFFFFFFFu;
+
+constexpr HalfFace half_face(TetId t, int f) { return 4 * t + static_cast<std::uint32_t>(f); }
+constexpr TetId tet_of(HalfFace h) { return h >> 2; }
+constexpr int face_of(HalfFace h) { return static_cast<int>(h & 3u); }
+
+class TetStore {
+ public:
+  // ---- reading -----------------------------------------------------------------------
+  VertexId vertex(TetId t, int slot) const { return v_[4 * t + slot]; }
+  const VertexId* vertices(TetId t) const { return &v_[4 * t]; }
+  // The half-face across face f of t (neighbour tet and its back face).
+  HalfFace opposite(TetId t, int f) const { return adj_[4 * t + f]; }
+  HalfFace opposite(HalfFace h) const { return adj_[h]; }
+  TetId neighbour(TetId t, int f) const { return tet_of(adj_[4 * t + f]); }
+  int back_face(TetId t, int f) const { return face_of(adj_[4 * t + f]); }
+
+  bool is_alive(TetId t) const { return v_[4 * t] != kDeadVertex; }
+  bool is_ghost(TetId t) const { return v_[4 * t + 3] == kGhostVertex; }
+
+  // Slots ever used (live + free); tet ids are < slots().
+  std::size_t slots() const { return v_.size() / 4; }
+  std::size_t live() const { return live_; }
+  // Bytes of topology per tet slot actually allocated (capacity), for reports.
+  std::size_t bytes_allocated() const {
+    return (v_.capacity() + adj_.capacity()) * sizeof(std::uint32_t);
+  }
+
+  // ---- writing -----------------------------------------------------------------------
+  void reserve(std::size_t tets) {
+    v_.reserve(4 * tets);
+    adj_.reserve(4 * tets);
+  }
+  void clear() {
+    v_.clear();
+    adj_.clear();
+    free_head_ = kNoTet;
+    live_ = 0;
+  }
+
+  // A new live tet with the given vertices; its adjacency is kNoHalfFace until linked.
+  // Precondition: the caller makes it positive (or a ghost with the ghost in slot 3).
+  TetId create(VertexId a, VertexId b, VertexId c, VertexId d) {
+    TetId t;
+    if (free_head_ != kNoTet) {
+      t = free_head_;
+      free_head_ = adj_[4 * t];
+    } else {
+      t = static_cast<TetId>(slots());
+      v_.resize(v_.size() + 4);
+      adj_.resize(adj_.size() + 4);
+    }
+    set_vertices(t, a, b, c, d);
+    for (int f = 0; f < 4; ++f) adj_[4 * t + f] = kNoHalfFace;
+    ++live_;
+    return t;
+  }
+  void set_vertices(TetId t, VertexId a, VertexId b, VertexId c, VertexId d) {
+    VertexId* p = &v_[4 * t];
+    p[0] = a;
+    p[1] = b;
+    p[2] = c;
+    p[3] = d;
+  }
+  void set_vertex(TetId t, int slot, VertexId x) { v_[4 * t + slot] = x; }
+  // Glue two half-faces to each other (both directions).
+  void link(HalfFace x, HalfFace y) {
+    adj_[x] = y;
+    adj_[y] = x;
+  }
+  // Set one direction only (the caller restores the involution before it reads again).
+  void set_opposite(HalfFace x, HalfFace y) { adj_[x] = y; }
+
+  // Free a live tet (its slot goes on the free list). Neighbours still pointing at it must
+  // be relinked by the caller.
+  void destroy(TetId t) {
+    v_[4 * t] = kDeadVertex;
+    adj_[4 * t] = free_head_;
+    free_head_ = t;
+    --live_;
+  }
+
+  // Topology invariants listed in the header comment. Returns one line per violation,
+  // each starting with the invariant's name; empty means valid. O(slots).
+  std::vector<std::string> check_topology() const;
+
+ private:
+  std::vector<VertexId> v_;
+  std::vector<HalfFace> adj_;
+  TetId free_head_ = kNoTet;
+  std::size_t live_ = 0;
+};
+
+}  // namespace pdr
