@@ -30,18 +30,64 @@
 //   incircle_sos is the same for planar (2D) input.
 // Since the ranks come from coordinates alone, the perturbed Delaunay tetrahedralization of
 // a point set is unique: every insertion order, rank count and checker agree on it.
+// Dominance order (sos_order.hpp): the lex-largest point's infinitesimal dominates, so the
+// sign is that of the unperturbed determinant, else of the cofactor of the lex-largest
+// point, and so on. The cofactors, with p taken in that order, are (o = orient3d/orient2d,
+// and for incircle3 o2 = orient2d in the plane, any orientation of the plane):
+//   insphere_sos(a,b,c,d,e): a: -o(b,c,d,e)  b: +o(a,c,d,e)  c: -o(a,b,d,e)  d: +o(a,b,c,e)
+//                            e: -o(a,b,c,d)  (a raised lift moves a point outward)
+//   incircle_sos(a,b,c,d):   a: +o(b,c,d)  b: -o(a,c,d)  c: +o(a,b,d)  d: -o(a,b,c)
+//   incircle3_sos(a,b,c,d):  the incircle_sos cofactors times o2(a,b,c).
+//
+// Input range: the adaptive predicates are exact when every coordinate is 0 or of
+// magnitude in [2^-E, 2^E], E = 450 (orient2d), 270 (orient3d), 190 (incircle, incircle3
+// and their _sos), 130 (insphere, insphere_sos); beyond it underflow may spoil a sign
+// (see filter.hpp). exact.hpp has no range limit. Infinities and NaNs are not allowed.
+//
+// Speed: the filter is inline (filter.hpp, no allocation, proven bound valid even under
+// FMA contraction); stage 2 is out of line in pdr_geom (stage2.hpp, stack arrays only).
 #pragma once
 
+#include "geom/filter.hpp"
 #include "geom/point.hpp"
+#include "geom/stage2.hpp"
 
 namespace pdr {
 
-Sign orient2d(const double* a, const double* b, const double* c);
-Sign incircle(const double* a, const double* b, const double* c, const double* d);
-Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d);
-Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d, const Point& e);
-Sign incircle3(const Point& a, const Point& b, const Point& c, const Point& d);
+inline Sign orient2d(const double* a, const double* b, const double* c) {
+  const Filtered f = filter::orient2d(a, b, c);
+  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  return stage2::orient2d(a, b, c);
+}
 
+inline Sign incircle(const double* a, const double* b, const double* c, const double* d) {
+  const Filtered f = filter::incircle(a, b, c, d);
+  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  return stage2::incircle(a, b, c, d);
+}
+
+inline Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Filtered f = filter::orient3d(a.data(), b.data(), c.data(), d.data());
+  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  return stage2::orient3d(a, b, c, d);
+}
+
+inline Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d,
+                     const Point& e) {
+  const Filtered f = filter::insphere(a.data(), b.data(), c.data(), d.data(), e.data());
+  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  return stage2::insphere(a, b, c, d, e);
+}
+
+// Precondition: a, b, c, d coplanar. Zero if a, b, c are collinear.
+inline Sign incircle3(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Filtered f = filter::incircle3(a.data(), b.data(), c.data(), d.data());
+  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  return stage2::incircle3(a, b, c, d);
+}
+
+// Symbolic perturbation (sos.cpp). Zero only when the unperturbed orientation of the first
+// three (2D) / four (3D) points is zero, or for incircle3_sos when a, b, c are collinear.
 Sign incircle_sos(const double* a, const double* b, const double* c, const double* d);
 Sign insphere_sos(const Point& a, const Point& b, const Point& c, const Point& d,
                   const Point& e);
