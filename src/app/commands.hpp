@@ -1,0 +1,38 @@
+// The subcommands of `pdr`: each reads its options (parsed once, in main.cpp), runs, prints
+// a summary (text, or one JSON object with --json) and returns an exit code (exit_codes.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pdr::app {
+
+struct DelaunayArgs {
+  std::string points;                  // POINTS.node
+  std::string prefix;                  // output prefix
+  std::vector<std::string> formats{"node", "vtu"};
+  bool check = true;
+  bool json = false;
+  unsigned threads = 2;
+};
+int run_delaunay(const DelaunayArgs& args);
+
+struct CheckArgs {
+  std::string mesh;                    // prefix or .ele/.node/.msh/.mesh/.vtu
+  std::optional<std::string> domain;   // .poly/.smesh
+  std::optional<double> ratio;
+  std::optional<double> h;
+  bool json = false;
+  unsigned threads = 2;
+  std::size_t max_reported = 20;
+};
+int run_check(const CheckArgs& args);
+
+struct DefaultArgs {
+  std::string prefix = "out/default";
+  bool json = false;
+};
+int run_default(const DefaultArgs& args);
+
+}  // namespace pdr::app

@@ -1,0 +1,93 @@
+// `pdr`: the command line. Parses the options once into each command's argument struct
+// (STYLE §14), runs the command, and maps failures to exit codes (exit_codes.hpp):
+// malformed input and bad usage exit 2 with "file:line: problem; what to do".
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <new>
+#include <system_error>
+
+#include "app/commands.hpp"
+#include "app/exit_codes.hpp"
+#include "io/error.hpp"
+
+namespace {
+
+using namespace pdr::app;
+
+void add_formats(CLI::App* cmd, std::vector<std::string>& formats) {
+  cmd->add_option("--formats", formats, "Output formats, comma separated: node,vtu,msh,mesh")
+      ->delimiter(',')
+      ->capture_default_str();
+}
+
+int dispatch(int argc, char** argv) {
+  CLI::App app{
+      "pdr: guaranteed-quality Delaunay refinement for polyhedral domains.\n"
+      "Without a command: the default job (see README.md, Quick start)."};
+  app.set_version_flag("--version", "pdr 0.1.0");
+  app.require_subcommand(0, 1);
+
+  DefaultArgs def;
+  app.add_option("-o,--output", def.prefix, "Output prefix of the default job")
+      ->capture_default_str();
+  app.add_flag("--json", def.json, "Print the summary as one JSON object");
+
+  DelaunayArgs del;
+  auto* cdel = app.add_subcommand("delaunay", "Delaunay tetrahedralization of a point set");
+  cdel->add_option("points", del.points, "TetGen .node file")->required()->check(
+      CLI::ExistingFile);
+  cdel->add_option("-o,--output", del.prefix, "Output prefix")->required();
+  add_formats(cdel, del.formats);
+  cdel->add_flag("!--no-check", del.check, "Skip the exact check of the result");
+  cdel->add_flag("--json", del.json, "Print the summary as one JSON object");
+  cdel->add_option("--threads", del.threads, "Checker threads")->check(CLI::Range(1, 256));
+
+  CheckArgs chk;
+  auto* cchk = app.add_subcommand(
+      "check", "Exact invariant checker for a tetrahedral mesh (any mesher's)");
+  cchk->add_option("mesh", chk.mesh,
+                   "Mesh: PREFIX (PREFIX.node + PREFIX.ele) or a .ele/.node/.msh/.mesh/.vtu")
+      ->required();
+  cchk->add_option("--domain", chk.domain, "The input domain (.poly/.smesh)")
+      ->check(CLI::ExistingFile);
+  cchk->add_option("--ratio", chk.ratio, "Require radius-edge ratio < B")
+      ->check(CLI::PositiveNumber);
+  cchk->add_option("--h", chk.h, "Require every edge longer than H")
+      ->check(CLI::NonNegativeNumber);
+  cchk->add_flag("--json", chk.json, "Print the report as one JSON object");
+  cchk->add_option("--threads", chk.threads, "Worker threads")->check(CLI::Range(1, 256));
+  cchk->add_option("--max-reported", chk.max_reported, "Findings listed per check");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  if (cdel->parsed()) return run_delaunay(del);
+  if (cchk->parsed()) return run_check(chk);
+  return run_default(def);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return dispatch(argc, argv);
+  } catch (const pdr::InputError& e) {
+    std::cerr << "pdr: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::system_error& e) {
+    std::cerr << "pdr: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "pdr: out of memory\n";
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "pdr: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+}

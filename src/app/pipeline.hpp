@@ -1,0 +1,24 @@
+// The steps that `pdr delaunay` and the default job share: build the Delaunay
+// tetrahedralization of a point set, write it atomically, check it exactly, and fill the
+// summary (vertices, duplicates, tets, tets/s, time per phase, peak memory, verdict).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/summary.hpp"
+#include "geom/point.hpp"
+#include "io/mesh_io.hpp"
+
+namespace pdr::app {
+
+std::vector<io::MeshFormat> parse_formats(const std::vector<std::string>& names);
+
+// Returns an exit code: kExitOk, kExitViolations (the checker disagrees: a bug), or throws
+// InputError (`source` names the input) when the points span no tetrahedron.
+int triangulate_write_check(std::vector<Point> points, const std::string& source,
+                            const std::string& prefix,
+                            const std::vector<io::MeshFormat>& formats, bool check,
+                            unsigned threads, PhaseTimer& timer, Summary& summary);
+
+}  // namespace pdr::app
