@@ -1,0 +1,183 @@
+// check_mesh: runs every checker in order over one shared, read-only Context.
+//
+// Order and gating: validity.indices and validity.coordinates come first; if either fails,
+// every other check is Skipped (indices and finite coordinates are preconditions of all
+// geometry). Then orientation (its exact signs are shared), the topology, the remaining
+// validity checks, the vertex grid, Delaunay emptiness and quality, and with a domain the
+// conformity and encroachment checks. Without a domain those are Skipped.
+#include <chrono>
+#include <utility>
+
+#include "check/checks.hpp"
+
+namespace pdr::check {
+namespace {
+
+struct Entry {
+  std::string_view id, invariant;
+};
+
+constexpr Entry kChecks[] = {
+    {"validity.indices", "§1.1 T(Omega) is a mesh of tetrahedra: vertex indices in range"},
+    {"validity.coordinates", "points are finite doubles (exact rationals)"},
+    {"validity.orientation", "§1.1 tetrahedra: orient3d(a,b,c,d) > 0 (positive volume)"},
+    {"validity.duplicate_vertices", "§1.1 mesh vertices are distinct points"},
+    {"validity.unreferenced_vertices", "every vertex belongs to a tet (warning only)"},
+    {"validity.face_sharing", "§1.2 a face is shared by at most two tets, on opposite sides"},
+    {"validity.boundary_closed", "the boundary faces form a closed, consistently oriented surface"},
+    {"validity.faces", "listed faces are the boundary faces (plus interior facet faces)"},
+    {"validity.overlap", "§1.1 T(Omega) is a tetrahedralization: tets meet only in common faces"},
+    {"delaunay.empty_sphere", "§1.2 Delaunay: no vertex strictly inside a tet's circumsphere"},
+    {"quality.ratio", "Theorem 1 (2): radius-edge ratio R/lmin < B for every tet"},
+    {"quality.shortest_edge", "Theorem 1 (1): every edge is longer than h"},
+    {"conformity.vertices", "§2.1 (1): every input vertex is a mesh vertex"},
+    {"conformity.segments", "§1.1, §2.1 (1): every segment is a union of subsegments (mesh edges)"},
+    {"conformity.facets", "§1.1, §2.1 (1): every facet is a union of subfacets (mesh faces)"},
+    {"conformity.volume", "§1.1 T(Omega) fills Omega: boundary faces in facets, holes empty, regions filled"},
+    {"encroachment.subsegments", "§1.1, Lemma 1 (1): no vertex strictly inside a subsegment's diametral sphere"},
+    {"encroachment.subfacets", "§1.1, Lemma 1 (1): no vertex strictly inside a subfacet's equatorial sphere"},
+};
+
+class Timer {
+ public:
+  explicit Timer(Report& r) : report_(r) {}
+  template <class F>
+  auto operator()(const char* phase, F&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto result = f();
+    report_.seconds[phase] +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return result;
+  }
+
+ private:
+  Report& report_;
+};
+
+void skip_rest(Report& rep, const std::string& reason) {
+  for (const Entry& e : kChecks) {
+    if (rep.find(e.id)) continue;
+    CheckResult r = make_result(e.id);
+    r.reason = reason;
+    rep.checks.push_back(std::move(r));
+  }
+}
+
+Report run(const MeshView& mesh, const Plc* domain, Options o) {
+  o.threads = std::max(1u, o.threads);
+  Report rep;
+  rep.points = mesh.points.size();
+  rep.tets = mesh.tets.size();
+  rep.has_domain = domain != nullptr;
+  rep.options = o;
+  Timer time(rep);
+  rep.checks.push_back(check_indices(mesh, o));
+  rep.checks.push_back(check_coordinates(mesh, o));
+  if (!rep.ok()) {
+    skip_rest(rep, "not run: validity.indices or validity.coordinates failed");
+    return rep;
+  }
+  Context c;
+  c.mesh = mesh;
+  c.domain = domain;
+  c.options = o;
+  rep.checks.push_back(time("orientation", [&] { return check_orientation(mesh, o, c.orientation); }));
+  c.topology = time("topology", [&] { return build_topology(mesh.tets, o.threads); });
+  rep.boundary_faces = c.topology.boundary.size();
+  rep.checks.push_back(time("validity", [&] { return check_duplicate_vertices(c); }));
+  rep.checks.push_back(time("validity", [&] { return check_unreferenced_vertices(c); }));
+  rep.checks.push_back(time("validity", [&] { return check_face_sharing(c); }));
+  rep.checks.push_back(time("validity", [&] { return check_boundary_closed(c); }));
+  rep.checks.push_back(time("validity", [&] { return check_listed_faces(c); }));
+  rep.checks.push_back(time("overlap", [&] { return check_overlap(c); }));
+  c.grid = time("grid", [&] { return PointGrid(mesh.points); });
+  rep.checks.push_back(time("delaunay", [&] { return check_empty_circumspheres(c); }));
+  rep.checks.push_back(time("quality", [&] { return check_radius_edge_ratio(c); }));
+  rep.checks.push_back(time("quality", [&] { return check_shortest_edge(c); }));
+  if (!domain) {
+    skip_rest(rep, "no domain given");
+    return rep;
+  }
+  c.domain_map = time("domain", [&] { return map_domain(*domain, mesh, c.topology, c.grid, o); });
+  rep.checks.push_back(time("conformity", [&] { return check_input_vertices(c); }));
+  rep.checks.push_back(time("conformity", [&] { return check_segments(c); }));
+  rep.checks.push_back(time("conformity", [&] { return check_facets(c); }));
+  rep.checks.push_back(time("conformity", [&] { return check_domain_volume(c); }));
+  rep.checks.push_back(time("encroachment", [&] { return check_subsegments_unencroached(c); }));
+  rep.checks.push_back(time("encroachment", [&] { return check_subfacets_unencroached(c); }));
+  return rep;
+}
+
+}  // namespace
+
+const std::vector<std::string_view>& check_ids() {
+  static const std::vector<std::string_view> ids = [] {
+    std::vector<std::string_view> v;
+    for (const Entry& e : kChecks) v.push_back(e.id);
+    return v;
+  }();
+  return ids;
+}
+
+CheckResult make_result(std::string_view id) {
+  CheckResult r;
+  r.id = std::string(id);
+  for (const Entry& e : kChecks)
+    if (e.id == id) r.invariant = std::string(e.invariant);
+  return r;
+}
+
+void conclude(CheckResult& r) { r.status = r.violations == 0 ? Status::Pass : Status::Fail; }
+
+Finding make_finding(const MeshView& mesh, std::string kind, std::uint64_t id,
+                     std::vector<std::uint32_t> vs, std::string message) {
+  Finding f;
+  f.kind = std::move(kind);
+  f.id = id;
+  for (std::uint32_t v : vs)
+    if (v < mesh.points.size()) f.points.push_back(mesh.points[v]);
+  f.vertices = std::move(vs);
+  f.message = std::move(message);
+  return f;
+}
+
+Finding tet_finding(const MeshView& mesh, std::uint64_t t, std::string message) {
+  const Tet& k = mesh.tets[t];
+  return make_finding(mesh, "tet", t, {k[0], k[1], k[2], k[3]}, std::move(message));
+}
+
+MeshView view_of(const MeshData& mesh) { return {mesh.points, mesh.tets, mesh.faces}; }
+
+bool Report::ok() const {
+  for (const CheckResult& r : checks)
+    if (r.status == Status::Fail) return false;
+  return true;
+}
+
+const CheckResult* Report::find(std::string_view id) const {
+  for (const CheckResult& r : checks)
+    if (r.id == id) return &r;
+  return nullptr;
+}
+
+Report check_mesh(const MeshView& mesh, Options options) { return run(mesh, nullptr, options); }
+
+Report check_mesh(const MeshView& mesh, const Plc& domain, Options options) {
+  return run(mesh, &domain, options);
+}
+
+Report check_arrays(std::span<const double> xyz, std::span<const std::uint32_t> tets,
+                    std::span<const std::uint32_t> faces, const Plc* domain, Options options) {
+  MeshData m;
+  m.points.resize(xyz.size() / 3);
+  for (std::size_t i = 0; i < m.points.size(); ++i) m.points[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  m.tets.resize(tets.size() / 4);
+  for (std::size_t i = 0; i < m.tets.size(); ++i)
+    m.tets[i] = {tets[4 * i], tets[4 * i + 1], tets[4 * i + 2], tets[4 * i + 3]};
+  m.faces.resize(faces.size() / 3);
+  for (std::size_t i = 0; i < m.faces.size(); ++i)
+    m.faces[i] = {faces[3 * i], faces[3 * i + 1], faces[3 * i + 2]};
+  return run(view_of(m), domain, options);
+}
+
+}  // namespace pdr::check

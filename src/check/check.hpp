@@ -1,0 +1,118 @@
+// pdr_check: an exact oracle for tetrahedral Delaunay meshes (the public API).
+//
+// Given a mesh as plain arrays (points, tets, optionally boundary faces) and optionally the
+// input domain (a Plc), check_mesh() decides, exactly, the invariants that the paper
+// (Nave, Chrisochoides, Chew 2002) guarantees of its output, and returns them as data:
+//
+//   validity.*              the mesh is a tetrahedralization: indices, finite and distinct
+//                           coordinates, positive tets, faces shared by at most two tets on
+//                           opposite sides, a closed outward boundary, interiors disjoint
+//   delaunay.empty_sphere   no vertex strictly inside a tet's circumsphere (§1.1, §1.2)
+//   quality.ratio           radius-edge ratio < B (Theorem 1, property 2)
+//   quality.shortest_edge   every edge longer than h (Theorem 1, property 1)
+//   conformity.*            the segments and facets of the domain appear as unions of mesh
+//                           edges and faces, and the mesh fills the domain (§1.1, §2.1 (1))
+//   encroachment.*          no subsegment or subfacet is encroached (§1.1; Lemma 1, inv. 1)
+//
+// Every decision is exact (signs of polynomials in the input doubles, taken as rationals):
+// floating-point filters with proven error bounds run first, GMP rationals (geom/exact.hpp)
+// decide what they cannot. The only tolerance is Options::relative_tolerance, which only
+// classifies imprecise input vertices as lying on a facet plane or a segment line (see
+// check/domain.hpp). Nothing here prints.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "geom/point.hpp"
+#include "mesh/mesh_data.hpp"
+#include "mesh/plc.hpp"
+
+namespace pdr::check {
+
+// A read-only view of a mesh. faces may be empty (then only the computed boundary is used).
+struct MeshView {
+  std::span<const Point> points;
+  std::span<const Tet> tets;
+  std::span<const Tri> faces;
+};
+
+MeshView view_of(const MeshData& mesh);
+
+// Parameters, passed by value (STYLE §14).
+struct Options {
+  std::optional<double> ratio_bound;  // B: quality.ratio requires R < B * lmin
+  std::optional<double> min_edge;     // h: quality.shortest_edge requires lmin > h
+  std::size_t max_reported = 20;      // findings kept per check (the first ones by id)
+  unsigned threads = 2;               // worker threads for the per-tet loops (>= 1)
+  // Input classification only (conformity, encroachment): a mesh vertex within
+  // relative_tolerance * (facet diameter) of a facet's plane, or within
+  // relative_tolerance * |AB| of a segment AB's line, counts as lying on it.
+  double relative_tolerance = 1e-10;
+  bool check_overlap = true;          // validity.overlap (the costliest validity check)
+};
+
+enum class Status { Pass, Warn, Fail, Skipped };
+std::string_view to_string(Status s);
+
+inline constexpr std::uint64_t kNoId = std::numeric_limits<std::uint64_t>::max();
+
+// One offending element (or pair of elements) of a check.
+struct Finding {
+  std::string kind;                     // "tet", "vertex", "face", "edge", "segment",
+                                        // "subsegment", "facet", "subfacet", "hole", ...
+  std::uint64_t id = kNoId;             // its index in its array (tet id, facet id, ...)
+  std::vector<std::uint32_t> vertices;  // mesh vertices involved (offender last)
+  std::vector<Point> points;            // their coordinates (or input coordinates)
+  std::optional<double> value;          // a measured value (ratio, length, ...), display only
+  std::string message;                  // begins with the check id
+};
+
+struct CheckResult {
+  std::string id;         // stable id, e.g. "delaunay.empty_sphere"
+  std::string invariant;  // the paper's definition/lemma it encodes
+  Status status = Status::Skipped;
+  std::string reason;     // why skipped or warned; empty otherwise
+  std::uint64_t checked = 0;     // elements examined
+  std::uint64_t violations = 0;  // elements violating the invariant
+  std::map<std::string, std::uint64_t> counts;  // e.g. "cospherical", "tolerance_vertices"
+  std::map<std::string, double> values;         // e.g. "max_ratio" (display only)
+  std::vector<Finding> findings;                // the first max_reported violations
+};
+
+struct Report {
+  static constexpr int kSchemaVersion = 1;
+  std::uint64_t points = 0, tets = 0, boundary_faces = 0;
+  bool has_domain = false;
+  Options options;
+  std::vector<CheckResult> checks;
+  std::map<std::string, double> seconds;  // wall time per phase; not reproducible, not in JSON
+                                          // unless asked
+
+  bool ok() const;  // no check failed (warnings and skips allowed)
+  const CheckResult* find(std::string_view id) const;
+};
+
+// Runs every check. Preconditions: none (a corrupt mesh yields failed checks, not UB).
+Report check_mesh(const MeshView& mesh, Options options = {});
+Report check_mesh(const MeshView& mesh, const Plc& domain, Options options = {});
+
+// For other meshers' tests: xyz holds 3 doubles per point, tets 4 indices per tet,
+// faces (optional) 3 per face. The arrays are copied.
+Report check_arrays(std::span<const double> xyz, std::span<const std::uint32_t> tets,
+                    std::span<const std::uint32_t> faces = {}, const Plc* domain = nullptr,
+                    Options options = {});
+
+std::string to_text(const Report& report);        // each failed check named first
+nlohmann::json to_json(const Report& report, bool with_timing = false);  // "schema_version"
+
+}  // namespace pdr::check

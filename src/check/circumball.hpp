@@ -1,0 +1,34 @@
+// Enclosures of circumballs (paper §1.1: a tet's circumsphere, a subsegment's diametral
+// sphere, a subfacet's equatorial sphere) as intervals, and boxes that provably contain the
+// closed balls, for grid queries. Nothing is decided here; exact predicates decide.
+//
+// Argument. The centre and squared radius are evaluated with interval arithmetic
+// (interval.hpp), so the true centre c and radius r satisfy c_i in [clo_i, chi_i] and
+// r <= rhi (rhi an upper bound of sqrt of the r^2 interval). Then the closed ball lies in
+// [clo_i - rhi, chi_i + rhi] (each computed rounding outward). When the interval
+// determinant straddles zero (badly conditioned simplex), the exact rational centre and
+// radius (geom/exact.hpp, or gmpxx) are converted to intervals instead: mpq_get_d truncates
+// toward zero, and widening by one ulp either way encloses the rational.
+#pragma once
+
+#include "check/grid.hpp"
+#include "check/interval.hpp"
+
+namespace pdr::check {
+
+struct BallEnclosure {
+  IVec center;
+  Interval r2;  // squared radius
+};
+
+// Circumball of a tet; precondition orient3d(a,b,c,d) != 0.
+BallEnclosure circumball(const Point& a, const Point& b, const Point& c, const Point& d);
+// Diametral ball of segment ab.
+BallEnclosure diametral_ball(const Point& a, const Point& b);
+// Equatorial ball of triangle abc; precondition: a, b, c not collinear.
+BallEnclosure equatorial_ball(const Point& a, const Point& b, const Point& c);
+
+// A box containing the closed ball.
+Box enclosing_box(const BallEnclosure& ball);
+
+}  // namespace pdr::check

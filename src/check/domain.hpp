@@ -1,0 +1,69 @@
+// DomainMap: the input domain (paper §1.1) as seen in a mesh. Which mesh vertex each input
+// vertex is; which mesh vertices lie on each segment, in order (they define its
+// subsegments); which mesh faces lie in each facet (its subfacets).
+//
+// Input classification, the only tolerance in pdr_check. Meshers compute vertices on
+// tilted segments and facets in floating point, so they are rarely exactly collinear or
+// coplanar with the input. A mesh vertex p counts as on the line of segment AB if it is
+// exactly collinear, or if dist(p, line AB) <= tol * |AB|; on the plane of facet F if it is
+// exactly coplanar with three spanning vertices a, b, c of F, or if dist(p, plane abc) <=
+// tol * diam(F) (diam: the diagonal of F's bounding box), tol = Options::relative_tolerance.
+// The distances are computed in double (this classifies input; it decides nothing about
+// the mesh). Everything after the classification is exact: the order of vertices along a
+// segment, whether they lie between its ends, face centroids in the facet region, areas.
+// How many vertices needed the tolerance is reported ("tolerance_vertices").
+// A mesh face lies in facet F if its three vertices are on F's plane and its centroid lies
+// in F's region (facet_region.hpp); in a conforming mesh no face straddles a segment, so
+// the centroid decides for the whole face.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "check/check.hpp"
+#include "check/facet_region.hpp"
+#include "check/grid.hpp"
+#include "check/topology.hpp"
+
+namespace pdr::check {
+
+enum class ItemStatus : std::uint8_t { Ok, MissingVertex, Degenerate, NonPlanar, Unsupported };
+
+struct SegmentMap {
+  std::uint32_t a = 0, b = 0;              // input vertex ids
+  ItemStatus status = ItemStatus::Ok;
+  std::vector<std::uint32_t> vertices;     // mesh vertices on it, from a to b
+  std::uint64_t tolerance_vertices = 0;    // of those, not exactly collinear
+};
+
+struct FacetMap {
+  ItemStatus status = ItemStatus::Ok;
+  std::optional<FacetRegion> region;       // when status is Ok
+  int drop = 2;                            // coordinate dropped by the projection
+  std::vector<std::uint32_t> on_plane;     // mesh vertices on its plane (sorted)
+  std::vector<std::uint32_t> faces;        // topology face ids lying in the facet
+  std::uint64_t tolerance_vertices = 0;    // on_plane vertices not exactly coplanar
+  std::uint64_t ambiguous_faces = 0;       // on-plane faces with a centroid on an edge
+};
+
+struct DomainMap {
+  std::vector<std::optional<std::uint32_t>> mesh_vertex;  // of each input vertex
+  std::vector<SegmentMap> segments;                        // distinct polygon edges
+  std::vector<FacetMap> facets;                            // one per input facet
+  std::vector<std::uint8_t> face_in_facet;                 // per topology face
+  std::vector<std::uint32_t> subfacets;                    // distinct faces in facets
+};
+
+// Preconditions: the mesh passed validity.indices and validity.coordinates.
+DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& topo,
+                     const PointGrid& grid, const Options& options);
+
+// The 2D projection used for a facet: drop coordinate `drop`, keep the next two cyclically.
+inline P2 project(const Point& p, int drop) {
+  return {p[(drop + 1) % 3], p[(drop + 2) % 3]};
+}
+
+}  // namespace pdr::check

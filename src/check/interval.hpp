@@ -1,0 +1,104 @@
+// Interval: closed floating-point intervals that provably enclose a real value.
+//
+// Used by the checkers' filters for the polynomials that have no hand-proven static error
+// bound (circumballs, radius-edge ratios, equatorial spheres, dot products) and for every
+// floating-point box that must contain an exact set (grid queries).
+//
+// Invariant and proof. Every operation is evaluated in IEEE-754 double with round-to-nearest
+// and its result r is widened to [prev(r), next(r)] (std::nextafter toward -inf / +inf).
+// The exact result x of the operation on the (exact) endpoints rounds to r, so no double
+// lies strictly between x and r; hence prev(r) <= x <= next(r). Operations are monotone in
+// each endpoint (multiplication takes the min/max of the four endpoint products), so the
+// widened result encloses the exact result for every value in the operands. This holds for
+// subnormal results too (rounding to nearest on the subnormal grid). Any non-finite endpoint
+// (overflow, or inf - inf) makes the interval the whole line, whose sign is unknown; the
+// checkers then fall back to exact rationals. Requires -ffp-contract=off (set on pdr_check):
+// a fused multiply-add would still be enclosed, but the widening argument is per operation.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "geom/point.hpp"
+
+namespace pdr::check {
+
+struct Interval {
+  double lo = 0, hi = 0;
+
+  constexpr Interval() = default;
+  constexpr Interval(double x) : lo(x), hi(x) {}  // NOLINT: exact doubles convert implicitly
+  constexpr Interval(double l, double h) : lo(l), hi(h) {}
+
+  static Interval whole() {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {-inf, inf};
+  }
+  bool finite() const { return std::isfinite(lo) && std::isfinite(hi); }
+};
+
+namespace interval_detail {
+inline double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+inline double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+inline Interval make(double lo, double hi) {
+  if (!(std::isfinite(lo) && std::isfinite(hi))) return Interval::whole();
+  return {down(lo), up(hi)};
+}
+}  // namespace interval_detail
+
+inline Interval operator+(const Interval& a, const Interval& b) {
+  if (!a.finite() || !b.finite()) return Interval::whole();
+  return interval_detail::make(a.lo + b.lo, a.hi + b.hi);
+}
+inline Interval operator-(const Interval& a, const Interval& b) {
+  if (!a.finite() || !b.finite()) return Interval::whole();
+  return interval_detail::make(a.lo - b.hi, a.hi - b.lo);
+}
+inline Interval operator-(const Interval& a) { return {-a.hi, -a.lo}; }
+inline Interval operator*(const Interval& a, const Interval& b) {
+  if (!a.finite() || !b.finite()) return Interval::whole();
+  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+  return interval_detail::make(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}));
+}
+inline Interval square(const Interval& a) {
+  if (!a.finite()) return Interval::whole();
+  const double l2 = a.lo * a.lo, h2 = a.hi * a.hi;
+  if (a.lo >= 0) return interval_detail::make(l2, h2);
+  if (a.hi <= 0) return interval_detail::make(h2, l2);
+  const Interval r = interval_detail::make(0, std::max(l2, h2));
+  return {0, r.hi};
+}
+inline Interval operator/(const Interval& a, const Interval& b) {
+  if (!a.finite() || !b.finite() || (b.lo <= 0 && b.hi >= 0)) return Interval::whole();
+  const double p1 = a.lo / b.lo, p2 = a.lo / b.hi, p3 = a.hi / b.lo, p4 = a.hi / b.hi;
+  return interval_detail::make(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}));
+}
+inline Interval sqrt(const Interval& a) {
+  if (!a.finite()) return Interval::whole();
+  const double l = a.lo > 0 ? interval_detail::down(std::sqrt(a.lo)) : 0.0;
+  return {std::max(l, 0.0), interval_detail::up(std::sqrt(std::max(a.hi, 0.0)))};
+}
+
+// The sign of every value in the interval, or nullopt when it straddles (or touches) zero
+// or is not finite.
+inline std::optional<Sign> interval_sign(const Interval& a) {
+  if (a.lo > 0 && std::isfinite(a.hi)) return Sign::Positive;
+  if (a.hi < 0 && std::isfinite(a.lo)) return Sign::Negative;
+  return std::nullopt;
+}
+
+using IVec = std::array<Interval, 3>;
+
+inline IVec ivec(const Point& p) { return {Interval(p[0]), Interval(p[1]), Interval(p[2])}; }
+inline IVec operator-(const IVec& a, const IVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline IVec operator+(const IVec& a, const IVec& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline IVec operator*(const Interval& s, const IVec& a) { return {s * a[0], s * a[1], s * a[2]}; }
+inline Interval dot(const IVec& a, const IVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Interval norm2(const IVec& a) { return square(a[0]) + square(a[1]) + square(a[2]); }
+inline IVec cross(const IVec& a, const IVec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+}  // namespace pdr::check
