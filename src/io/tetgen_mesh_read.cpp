@@ -65,7 +65,8 @@ void read_ele(const std::string& path, std::uint32_t base, MeshData& mesh, Point
     for (std::size_t a = 0; a < nattr; ++a) {
       const double attr = s.number<double>("a tet attribute");
       if (a == 0 && regions_ok) {
-        if (attr == std::floor(attr) && std::fabs(attr) <= std::numeric_limits<int>::max())
+        if (attr == std::floor(attr) && attr >= std::numeric_limits<int>::min() &&
+            attr <= std::numeric_limits<int>::max())
           regions.push_back(static_cast<int>(attr));
         else
           regions_ok = false;  // real-valued attributes are not region numbers

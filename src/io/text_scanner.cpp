@@ -85,7 +85,7 @@ std::size_t TextScanner::count(std::string_view what, std::size_t min_bytes) {
   const std::string_view tok = token(what);
   std::uint64_t n = 0;
   if (!parse_number(tok, n)) bad_number(what, tok, "a non-negative integer");
-  const std::size_t left = text_.size() - std::min(next_, text_.size());
+  const std::size_t left = text_.size() - std::min(pos_, text_.size());
   if (min_bytes > 0 && n > left / min_bytes)
     fail(std::string(what) + " " + std::to_string(n) + " is more than the " +
          std::to_string(left) + " bytes left in the file can hold; the count is wrong or " +

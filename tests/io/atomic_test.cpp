@@ -1,0 +1,149 @@
+// Atomic output: a write that fails (by an exception in the writer, a bad MeshData, a file
+// size limit hit midway, a missing directory) leaves no target and no temporary; an older
+// file of the same name survives a failed write; multi-file sets appear all or none.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <sys/resource.h>
+#include <system_error>
+
+#include "io/atomic_file.hpp"
+#include "io/mesh_io.hpp"
+#include "io/tetgen.hpp"
+#include "io_test_util.hpp"
+
+namespace pdr::io::test {
+namespace {
+
+using Names = std::vector<std::string>;
+
+TEST(Atomic, CommitLeavesOnlyTheTarget) {
+  ScratchDir dir;
+  {
+    AtomicFile f(dir / "out.txt");
+    f.write("hello ");
+    f.write("world");
+    EXPECT_EQ(dir.entries().size(), 1u);  // the temporary
+    EXPECT_NE(dir.entries()[0], "out.txt");
+    f.commit();
+  }
+  EXPECT_EQ(dir.entries(), Names{"out.txt"});
+  EXPECT_EQ(read_text(dir / "out.txt"), "hello world");
+}
+
+TEST(Atomic, ThrowMidwayLeavesNothing) {
+  ScratchDir dir;
+  try {
+    AtomicFile f(dir / "out.txt");
+    f.write("partial");
+    throw std::runtime_error("writer failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(Atomic, FailedWriteKeepsTheOldFile) {
+  ScratchDir dir;
+  write_text(dir / "out.txt", "old");
+  try {
+    AtomicFile f(dir / "out.txt");
+    f.write("new but unfinished");
+    throw std::runtime_error("writer failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(read_text(dir / "out.txt"), "old");
+  EXPECT_EQ(dir.entries(), Names{"out.txt"});
+  {
+    AtomicFile f(dir / "out.txt");
+    f.write("new");
+    f.commit();
+  }
+  EXPECT_EQ(read_text(dir / "out.txt"), "new");
+}
+
+TEST(Atomic, GroupCommitsAllOrNone) {
+  ScratchDir dir;
+  try {
+    AtomicFile a(dir / "x.node"), b(dir / "x.ele"), c(dir / "x.face");
+    a.write("1");
+    b.write("2");
+    throw std::runtime_error("third file failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_TRUE(dir.entries().empty());
+  {
+    AtomicFile a(dir / "x.node"), b(dir / "x.ele");
+    a.write("1");
+    b.write("2");
+    AtomicFile* both[] = {&a, &b};
+    commit_all(both);
+  }
+  EXPECT_EQ(dir.entries(), (Names{"x.ele", "x.node"}));
+}
+
+TEST(Atomic, InvalidMeshIsRejectedBeforeAnyFile) {
+  ScratchDir dir;
+  MeshData bad = cube_mesh();
+  bad.tets[2][1] = 99;
+  EXPECT_THROW(write_tetgen_mesh(bad, dir / "b"), std::invalid_argument);
+  const MeshFormat all[] = {MeshFormat::TetGen, MeshFormat::Vtu, MeshFormat::Msh,
+                            MeshFormat::Medit};
+  EXPECT_THROW(write_mesh(bad, dir / "b", all), std::invalid_argument);
+  MeshData short_markers = cube_mesh();
+  short_markers.face_markers.pop_back();
+  EXPECT_THROW(write_mesh(short_markers, dir / "c", all), std::invalid_argument);
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(Atomic, MissingDirectoryFailsCleanly) {
+  ScratchDir dir;
+  EXPECT_THROW(write_mesh(cube_mesh(), dir / "no/such/dir/x",
+                          std::vector<MeshFormat>{MeshFormat::Vtu}),
+               std::system_error);
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+// Lowers the file size limit so that writes fail with EFBIG part way through a file.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    old_handler_ = std::signal(SIGXFSZ, SIG_IGN);
+    getrlimit(RLIMIT_FSIZE, &old_);
+    rlimit lim = old_;
+    lim.rlim_cur = bytes;
+    setrlimit(RLIMIT_FSIZE, &lim);
+  }
+  ~FileSizeLimit() {
+    setrlimit(RLIMIT_FSIZE, &old_);
+    std::signal(SIGXFSZ, old_handler_);
+  }
+
+ private:
+  rlimit old_{};
+  void (*old_handler_)(int);
+};
+
+MeshData few_points_many_tets() {
+  MeshData m = cube_mesh();
+  m.tets.assign(200000, Tet{0, 1, 2, 6});
+  m.tet_regions.clear();
+  return m;
+}
+
+TEST(Atomic, WriterFailingMidwayLeavesNoFileAndNoTemp) {
+  ScratchDir dir;
+  const MeshData m = few_points_many_tets();
+  for (MeshFormat f : {MeshFormat::TetGen, MeshFormat::Vtu, MeshFormat::Msh,
+                       MeshFormat::Medit}) {
+    SCOPED_TRACE(static_cast<int>(f));
+    FileSizeLimit limit(64 * 1024);  // .node fits, the tets do not
+    EXPECT_THROW(write_mesh(m, dir / "big", std::vector<MeshFormat>{f}), std::system_error);
+    EXPECT_TRUE(dir.entries().empty());
+  }
+  // Without the limit the same writes succeed.
+  write_mesh(m, dir / "big", std::vector<MeshFormat>{MeshFormat::TetGen});
+  EXPECT_EQ(dir.entries(), (Names{"big.ele", "big.face", "big.node"}));
+}
+
+}  // namespace
+}  // namespace pdr::io::test
