@@ -1,0 +1,312 @@
+// Which side of the boundary is the domain (paper §1.1: "a closed polyhedral domain,
+// possibly having holes and voids"), and the volume hole checks (step 7 of build_domain).
+//
+// The boundary is closed mod 2 (every segment bounds an even number of facet sides), so a
+// ray from a point crosses it an odd number of times iff the point is enclosed by an odd
+// number of closed surfaces; pdr's domain Ω is that set (a void inside a body is even).
+// Orientation:
+//   1. the facet sides around each segment are sorted by angle about a->b (exact:
+//      orient3d against a reference side, then pairwise);
+//   2. triangles are connected through their facet (same inward side) and around each
+//      segment, where the wedges between consecutive sides alternate in / out of Ω, so
+//      inward(next) = -inward(this) * dir(this) * dir(next);
+//   3. each connected component ("shell") is seeded by an exact ray from a rational
+//      point inside one triangle along the axis of its largest normal component, counting
+//      proper crossings with rational orient3d; a ray that touches an edge, a vertex or
+//      lies in a triangle's plane is discarded and another point is tried.
+// Hole points are tested the same way with rays from the point itself (axis rays first,
+// then fixed pseudo-random directions), counting crossings per shell.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "geom/predicates.hpp"
+#include "refine/plc_bvh.hpp"
+#include "refine/plc_exact.hpp"
+#include "refine/plc_intersect.hpp"
+#include "refine/plc_steps.hpp"
+
+namespace pdr::refine::detail {
+
+namespace {
+
+struct TriRef {
+  std::uint32_t facet, tri;
+};
+
+enum class Hit : std::uint8_t { Miss, Cross, Degenerate };
+
+// Segment o -> f against the closed triangle abc. Preconditions: o lies in no triangle
+// but the skipped one; f lies beyond every bounding box. A ray inside the triangle's plane
+// is reported degenerate without looking further (another ray is then tried).
+Hit classify(const QPoint& o, const QPoint& f, const QPoint& a, const QPoint& b, const QPoint& c) {
+  const Sign so = orient3d_q(a, b, c, o), sf = orient3d_q(a, b, c, f);
+  if (so == Sign::Zero && sf == Sign::Zero) return Hit::Degenerate;
+  if (so == sf) return Hit::Miss;
+  if (so == Sign::Zero || sf == Sign::Zero) return Hit::Miss;  // touches the plane outside
+  const Sign s1 = orient3d_q(o, f, a, b), s2 = orient3d_q(o, f, b, c), s3 = orient3d_q(o, f, c, a);
+  const bool neg = s1 == Sign::Negative || s2 == Sign::Negative || s3 == Sign::Negative;
+  const bool pos = s1 == Sign::Positive || s2 == Sign::Positive || s3 == Sign::Positive;
+  if (neg && pos) return Hit::Miss;
+  if (s1 == Sign::Zero || s2 == Sign::Zero || s3 == Sign::Zero) return Hit::Degenerate;
+  return Hit::Cross;
+}
+
+class RayCaster {
+ public:
+  explicit RayCaster(const PlcDomain& dom) : dom_(dom) {
+    for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
+      for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t) tris_.push_back({f, t});
+    std::vector<Box> boxes(tris_.size());
+    for (std::size_t i = 0; i < tris_.size(); ++i)
+      for (std::uint32_t v : tri(tris_[i]).v) {
+        boxes[i].add(dom.plc.points[v]);
+        all_.add(dom.plc.points[v]);
+      }
+    bvh_ = Bvh(std::move(boxes));
+  }
+  const std::vector<TriRef>& tris() const { return tris_; }
+  const FacetTri& tri(const TriRef& r) const { return dom_.facets[r.facet].tris[r.tri]; }
+  const Box& bounds() const { return all_; }
+  const Bvh& bvh() const { return bvh_; }
+
+  // Crossings of the ray o -> far per shell, skipping triangle `skip`; false if degenerate.
+  // Axis rays (axis >= 0) use the hierarchy; others test every triangle.
+  bool cast(const QPoint& o, const QPoint& far, int axis, int direction, std::int64_t skip,
+            std::vector<int>& crossings) const {
+    crossings.assign(dom_.shells, 0);
+    bool ok = true;
+    auto test = [&](std::uint32_t i) {
+      if (!ok || static_cast<std::int64_t>(i) == skip) return;
+      const FacetTri& t = tri(tris_[i]);
+      const Point &a = dom_.plc.points[t.v[0]], &b = dom_.plc.points[t.v[1]],
+                  &c = dom_.plc.points[t.v[2]];
+      const Hit h = classify(o, far, to_q(a), to_q(b), to_q(c));
+      if (h == Hit::Degenerate) {
+        ok = false;
+        return;
+      }
+      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
+    };
+    if (axis < 0) {
+      for (std::uint32_t i = 0; i < tris_.size(); ++i) test(i);
+      return ok;
+    }
+    bvh_.for_each_kept(
+        [&](const Box& b) {
+          for (int j = 0; j < 3; ++j) {
+            if (j == axis) continue;
+            if (o[j] < b.lo[j] || o[j] > b.hi[j]) return false;
+          }
+          return direction > 0 ? o[axis] <= b.hi[axis] : o[axis] >= b.lo[axis];
+        },
+        test);
+    return ok;
+  }
+
+ private:
+  const PlcDomain& dom_;
+  std::vector<TriRef> tris_;
+  Bvh bvh_;
+  Box all_;
+};
+
+QPoint far_point(const QPoint& o, const Box& all, int axis, int direction) {
+  QPoint f = o;
+  const double extent = (all.hi[0] - all.lo[0]) + (all.hi[1] - all.lo[1]) + (all.hi[2] - all.lo[2]) + 1;
+  f[axis] = mpq_class(direction > 0 ? all.hi[axis] + extent : all.lo[axis] - extent);
+  return f;
+}
+
+void sort_sides(const std::vector<Point>& pts, DomainSegment& s) {
+  if (s.sides.size() < 2) return;
+  const Point &p = pts[s.a], &q = pts[s.b], &w0 = pts[s.sides[0].apex];
+  const int drop = nondegenerate_drop(p, q, w0);
+  auto half = [&](const HalfFacet& h) {
+    if (h.apex == s.sides[0].apex) return 0;
+    const Sign o = orient3d(p, q, w0, pts[h.apex]);
+    if (o != Sign::Zero) return o == Sign::Positive ? 0 : 1;
+    if (orient2d_dropping(drop, p, q, w0) == orient2d_dropping(drop, p, q, pts[h.apex]))
+      throw std::logic_error("plc_orient: two facet sides overlap along a segment");
+    return 1;  // the opposite half-plane: angle pi
+  };
+  std::stable_sort(s.sides.begin() + 1, s.sides.end(), [&](const HalfFacet& x, const HalfFacet& y) {
+    const int hx = half(x), hy = half(y);
+    if (hx != hy) return hx < hy;
+    return orient3d(p, q, pts[x.apex], pts[y.apex]) == Sign::Positive;
+  });
+}
+
+}  // namespace
+
+void orient_boundary(PlcDomain& dom) {
+  const std::vector<Point>& pts = dom.plc.points;
+  for (DomainSegment& s : dom.segments) sort_sides(pts, s);
+
+  // Components of the triangle graph.
+  std::vector<std::size_t> offset(dom.facets.size() + 1, 0);
+  for (std::size_t f = 0; f < dom.facets.size(); ++f)
+    offset[f + 1] = offset[f] + dom.facets[f].tris.size();
+  const std::size_t n = offset.back();
+  std::vector<std::int8_t> inward(n, 0);
+  std::vector<int> comp(n, -1);
+  // Around-segment links: side i to side i+1, with the factor -dir_i * dir_{i+1}.
+  std::vector<std::vector<std::pair<std::size_t, std::int8_t>>> links(n);
+  for (const DomainSegment& s : dom.segments)
+    for (std::size_t i = 0; i < s.sides.size() && s.sides.size() >= 2; ++i) {
+      const HalfFacet &x = s.sides[i], &y = s.sides[(i + 1) % s.sides.size()];
+      const std::size_t tx = offset[x.facet] + x.tri, ty = offset[y.facet] + y.tri;
+      const auto factor = static_cast<std::int8_t>(-x.dir * y.dir);
+      links[tx].push_back({ty, factor});
+      links[ty].push_back({tx, factor});
+    }
+  auto facet_of = [&](std::size_t g) {
+    return static_cast<std::uint32_t>(std::upper_bound(offset.begin(), offset.end(), g) - offset.begin() - 1);
+  };
+  std::vector<std::size_t> seeds;
+  for (std::size_t g0 = 0; g0 < n; ++g0) {
+    if (comp[g0] >= 0) continue;
+    const int c = static_cast<int>(seeds.size());
+    seeds.push_back(g0);
+    std::vector<std::size_t> stack{g0};
+    comp[g0] = c;
+    while (!stack.empty()) {
+      const std::size_t g = stack.back();
+      stack.pop_back();
+      const std::uint32_t f = facet_of(g);
+      const FacetTri& t = dom.facets[f].tris[g - offset[f]];
+      auto visit = [&](std::size_t h) {
+        if (comp[h] < 0) {
+          comp[h] = c;
+          stack.push_back(h);
+        }
+      };
+      for (std::int32_t nb : t.nbr)
+        if (nb >= 0) visit(offset[f] + static_cast<std::size_t>(nb));
+      for (const auto& [h, factor] : links[g]) visit(h);
+    }
+  }
+  dom.shells = seeds.size();
+  for (std::size_t f = 0; f < dom.facets.size(); ++f)
+    if (!dom.facets[f].tris.empty()) dom.facets[f].shell = comp[offset[f]];
+
+  const RayCaster rays(dom);
+  for (std::size_t c = 0; c < seeds.size(); ++c) {
+    // Seed: a ray from a rational point inside a triangle of the component.
+    std::size_t g = seeds[c];
+    std::int8_t seed_inward = 0;
+    for (int attempt = 0; attempt < 200 && seed_inward == 0; ++attempt) {
+      if (attempt > 0 && attempt % 8 == 0) {  // try another triangle of the component
+        for (std::size_t h = g + 1; h < n; ++h)
+          if (comp[h] == static_cast<int>(c)) {
+            g = h;
+            break;
+          }
+      }
+      const std::uint32_t f = facet_of(g);
+      const FacetTri& t = dom.facets[f].tris[g - offset[f]];
+      const Point &a = pts[t.v[0]], &b = pts[t.v[1]], &cc = pts[t.v[2]];
+      const int axis = nondegenerate_drop(a, b, cc);
+      const Sign nk = orient2d_dropping(axis, a, b, cc);
+      const mpq_class w1(3 + 2 * attempt), w2(5 + 3 * attempt), w3(7 + 5 * attempt);
+      const mpq_class sum = w1 + w2 + w3;
+      QPoint o;
+      for (int k = 0; k < 3; ++k)
+        o[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
+      std::vector<int> crossings;
+      const auto skip = static_cast<std::int64_t>(g);  // RayCaster numbers triangles as g
+      if (!rays.cast(o, far_point(o, rays.bounds(), axis, +1), axis, +1, skip, crossings)) continue;
+      int total = 0;
+      for (int x : crossings) total += x;
+      // The ray leaves along +axis, i.e. to the side of the normal iff n_axis > 0; that
+      // side is in the domain iff the ray crosses the boundary an odd number of times.
+      seed_inward = static_cast<std::int8_t>((nk == Sign::Positive ? 1 : -1) * (total % 2 ? 1 : -1));
+    }
+    if (seed_inward == 0) throw std::logic_error("plc_orient: no non-degenerate ray found");
+    inward[g] = seed_inward;
+    std::vector<std::size_t> stack{g};
+    while (!stack.empty()) {
+      const std::size_t x = stack.back();
+      stack.pop_back();
+      const std::uint32_t f = facet_of(x);
+      const FacetTri& t = dom.facets[f].tris[x - offset[f]];
+      auto visit = [&](std::size_t h, std::int8_t value) {
+        if (inward[h] == 0) {
+          inward[h] = value;
+          stack.push_back(h);
+        } else if (inward[h] != value) {
+          throw std::logic_error("plc_orient: inconsistent boundary orientation");
+        }
+      };
+      for (std::int32_t nb : t.nbr)
+        if (nb >= 0) visit(offset[f] + static_cast<std::size_t>(nb), inward[x]);
+      for (const auto& [h, factor] : links[x]) visit(h, static_cast<std::int8_t>(inward[x] * factor));
+    }
+  }
+  for (std::size_t f = 0; f < dom.facets.size(); ++f)
+    for (std::size_t t = 0; t < dom.facets[f].tris.size(); ++t)
+      dom.facets[f].tris[t].inward = inward[offset[f] + t];
+  for (DomainSegment& s : dom.segments)
+    for (HalfFacet& h : s.sides)
+      h.inside_after = static_cast<std::int8_t>(dom.facets[h.facet].tris[h.tri].inward * h.dir);
+}
+
+void check_volume_holes(const PlcDomain& dom) {
+  const Plc& plc = dom.plc;
+  if (plc.holes.empty()) return;
+  const RayCaster rays(dom);
+  for (std::size_t i = 0; i < plc.holes.size(); ++i) {
+    const Point& h = plc.holes[i];
+    const std::size_t line = i < plc.hole_lines.size() ? plc.hole_lines[i] : 0;
+    const std::string which = "volume hole point " + std::to_string(i + 1);
+    Box q;
+    q.add(h);
+    rays.bvh().for_overlapping(q, [&](std::uint32_t k) {
+      const FacetTri& t = rays.tri(rays.tris()[k]);
+      if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], h))
+        fail(plc, line,
+             "volume hole off facets: " + which + " lies on " +
+                 facet_name(plc, rays.tris()[k].facet) + "; move it into the void it marks");
+    });
+    const QPoint o = to_q(h);
+    std::vector<int> crossings;
+    bool done = false;
+    for (int attempt = 0; attempt < 6 && !done; ++attempt) {
+      const int axis = attempt / 2, direction = attempt % 2 ? -1 : 1;
+      done = rays.cast(o, far_point(o, rays.bounds(), axis, direction), axis, direction, -1, crossings);
+    }
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (int attempt = 0; attempt < 64 && !done; ++attempt) {
+      Point dir;
+      for (double& x : dir) {  // fixed-seed LCG: reproducible directions
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        x = static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
+      }
+      const Box& all = rays.bounds();
+      const double extent = (all.hi[0] - all.lo[0]) + (all.hi[1] - all.lo[1]) + (all.hi[2] - all.lo[2]) + 1;
+      double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+      Point far;
+      for (int k = 0; k < 3; ++k) far[k] = h[k] + 4 * extent * dir[k] / len;
+      done = rays.cast(o, to_q(far), -1, 0, -1, crossings);
+    }
+    if (!done) throw std::logic_error("plc_orient: no non-degenerate ray from a hole point");
+    int total = 0, enclosing = 0;
+    for (int x : crossings) {
+      total += x;
+      enclosing += x % 2;
+    }
+    if (enclosing == 0)
+      fail(plc, line,
+           "volume hole in a void: " + which +
+               " lies outside the domain's closed boundary; a volume hole point must mark "
+               "a void enclosed by the boundary. Move it into the void or remove it");
+    if (total % 2 == 1)
+      fail(plc, line,
+           "volume hole in a void: " + which +
+               " lies inside the domain (it is enclosed by an odd number of closed boundary "
+               "surfaces), not in a void; pdr's domain is what the closed boundary encloses, "
+               "so a hole point can only mark a void. Move it into the void or remove it");
+  }
+}
+
+}  // namespace pdr::refine::detail
