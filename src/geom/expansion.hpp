@@ -125,6 +125,38 @@ inline int scale(const double* e, int n, double b, double* h) {
   return k;
 }
 
+// h = e with fewer components (Compress, paper §2.8 and Theorem 23): a top-down pass of
+// two-sums gathers the value into few large components, a bottom-up pass makes them
+// nonoverlapping again. The value is unchanged (every step is a two-sum); the output is
+// nonoverlapping with at most n components. Products of expansions cost the product of
+// the lengths, so the stages compress before multiplying. h may not alias e.
+inline int compress(const double* e, int n, double* h) {
+  if (n == 0) return 0;
+  // Pass 1 writes the gathered components to h[bottom..n-1], pass 2 rewrites h from 0.
+  int bottom = n - 1;
+  double q = e[n - 1];
+  for (int i = n - 2; i >= 0; --i) {
+    double s, t;
+    two_sum(q, e[i], s, t);
+    if (t != 0) {
+      h[bottom--] = s;
+      q = t;
+    } else {
+      q = s;
+    }
+  }
+  h[bottom] = q;
+  int top = 0;
+  for (int i = bottom + 1; i < n; ++i) {
+    double s, t;
+    two_sum(h[i], q, s, t);
+    if (t != 0) h[top++] = t;
+    q = s;
+  }
+  h[top++] = q;
+  return top;
+}
+
 // --- Fixed-capacity expansions with compile-time size tracking. ---
 
 template <int N>
@@ -141,6 +173,13 @@ struct Expansion {
     return s;
   }
 };
+
+template <int N>
+Expansion<N> compressed(const Expansion<N>& e) {
+  Expansion<N> r;
+  r.n = compress(e.c, e.n, r.c);
+  return r;
+}
 
 inline Expansion<1> single(double a) {
   Expansion<1> r;

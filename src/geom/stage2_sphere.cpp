@@ -9,80 +9,62 @@
 // the orientation minors become 2x2 / 3x3 determinants of the differences); this is an
 // identity for incircle and insphere, and for incircle3 it holds on coplanar input
 // (the dropped coordinate of p - d is then a linear combination of the other two).
-// Worst-case sizes: insphere untranslated 5 x 1152 components (about 100 KB of stack).
+// Worst-case sizes: insphere untranslated 5 x 1152 components (about 100 KB of stack);
+// compression (expansion::compress) keeps the actual lengths short.
 // Reference: Shewchuk 1997, §4.4 (method only). Invariant: exact within filter.hpp's range.
-#include "geom/expansion.hpp"
 #include "geom/stage2.hpp"
+#include "geom/stage2_terms.hpp"
 
 namespace pdr::stage2 {
 
-using expansion::cross_difference;
-using expansion::Expansion;
-using expansion::product;
-using expansion::two_diff;
-
-namespace {
-
-Expansion<4> xy(const double* p, const double* q, int i = 0, int j = 1) {
-  return cross_difference(p[i], q[j], p[j], q[i]);
-}
-
-Expansion<4> lift2(const double* p) { return product(p[0], p[0]) + product(p[1], p[1]); }
-Expansion<6> lift3(const double* p) { return lift2(p) + product(p[2], p[2]); }
-
-// Untranslated orient2d of (p, q, r) on coordinates (i, j).
-Expansion<12> orient2(const double* p, const double* q, const double* r, int i, int j) {
-  return (xy(p, q, i, j) + xy(q, r, i, j)) + xy(r, p, i, j);
-}
-
-Expansion<24> det3(const double* p, const double* q, const double* r) {
-  return (xy(q, r) * p[2] - xy(p, r) * q[2]) + xy(p, q) * r[2];
-}
-
-// Untranslated orient3d(p, q, r, s) = det3(q,r,s) - det3(p,r,s) + det3(p,q,s) - det3(p,q,r).
-Expansion<96> orient3(const double* p, const double* q, const double* r, const double* s) {
-  return (det3(q, r, s) - det3(p, r, s)) + (det3(p, q, s) - det3(p, q, r));
-}
-
-bool exact_differences(const double* p, const double* o, int n, double* out) {
-  for (int i = 0; i < n; ++i) {
-    double err;
-    two_diff(p[i], o[i], out[i], err);
-    if (err != 0) return false;
-  }
-  return true;
-}
-
-}  // namespace
+using namespace terms;
 
 Sign incircle(const double* a, const double* b, const double* c, const double* d) {
   double ta[2], tb[2], tc[2];
   if (exact_differences(a, d, 2, ta) && exact_differences(b, d, 2, tb) &&
       exact_differences(c, d, 2, tc))
     return ((lift2(ta) * xy(tb, tc) + lift2(tb) * xy(tc, ta)) + lift2(tc) * xy(ta, tb)).sign();
-  const Expansion<192> ab = lift2(a) * orient2(b, c, d, 0, 1) - lift2(b) * orient2(a, c, d, 0, 1);
-  const Expansion<192> cd = lift2(c) * orient2(a, b, d, 0, 1) - lift2(d) * orient2(a, b, c, 0, 1);
+  const Expansion<192> ab = lift2(a) * compressed(orient2(b, c, d)) -
+                            lift2(b) * compressed(orient2(a, c, d));
+  const Expansion<192> cd = lift2(c) * compressed(orient2(a, b, d)) -
+                            lift2(d) * compressed(orient2(a, b, c));
   return (ab + cd).sign();
 }
 
 Sign insphere(const Point& pa, const Point& pb, const Point& pc, const Point& pd,
               const Point& pe) {
-  const double *a = pa.data(), *b = pb.data(), *c = pc.data(), *d = pd.data(), *e = pe.data();
-  double ta[3], tb[3], tc[3], td[3];
-  if (exact_differences(a, e, 3, ta) && exact_differences(b, e, 3, tb) &&
-      exact_differences(c, e, 3, tc) && exact_differences(d, e, 3, td)) {
-    const Expansion<576> ab = lift3(ta) * det3(tb, tc, td) - lift3(tb) * det3(ta, tc, td);
-    const Expansion<576> cd = lift3(tc) * det3(ta, tb, td) - lift3(td) * det3(ta, tb, tc);
+  const double* p[5] = {pa.data(), pb.data(), pc.data(), pd.data(), pe.data()};
+  double t[4][3];
+  bool translated = true;
+  for (int i = 0; i < 4 && translated; ++i)
+    translated = exact_differences(p[i], p[4], 3, t[i]);
+  if (translated) {
+    const Expansion<576> ab = lift3(t[0]) * compressed(det3(t[1], t[2], t[3])) -
+                              lift3(t[1]) * compressed(det3(t[0], t[2], t[3]));
+    const Expansion<576> cd = lift3(t[2]) * compressed(det3(t[0], t[1], t[3])) -
+                              lift3(t[3]) * compressed(det3(t[0], t[1], t[2]));
     return (ab + cd).sign();
   }
+  // The ten untranslated 3x3 minors det3(p_i, p_j, p_k), i < j < k, computed once.
+  Expansion<24> m[5][5][5];
+  for (int i = 0; i < 5; ++i)
+    for (int j = i + 1; j < 5; ++j)
+      for (int k = j + 1; k < 5; ++k) m[i][j][k] = det3(p[i], p[j], p[k]);
+  // orient3d of the four points other than p_i (in order q < r < s < t).
+  const auto orient_without = [&](int i) {
+    int o[4], n = 0;
+    for (int k = 0; k < 5; ++k)
+      if (k != i) o[n++] = k;
+    return compressed((m[o[1]][o[2]][o[3]] - m[o[0]][o[2]][o[3]]) +
+                      (m[o[0]][o[1]][o[3]] - m[o[0]][o[1]][o[2]]));
+  };
   Expansion<4608> sum;
   {
-    const Expansion<2304> ab = lift3(b) * orient3(a, c, d, e) - lift3(a) * orient3(b, c, d, e);
-    const Expansion<2304> cd = lift3(d) * orient3(a, b, c, e) - lift3(c) * orient3(a, b, d, e);
+    const Expansion<2304> ab = lift3(p[1]) * orient_without(1) - lift3(p[0]) * orient_without(0);
+    const Expansion<2304> cd = lift3(p[3]) * orient_without(3) - lift3(p[2]) * orient_without(2);
     sum.n = expansion::sum(ab.c, ab.n, cd.c, cd.n, sum.c);
   }
-  const Expansion<1152> ee = -(lift3(e) * orient3(a, b, c, d));
-  return (sum + ee).sign();
+  return (sum - lift3(p[4]) * orient_without(4)).sign();
 }
 
 Sign incircle3(const Point& pa, const Point& pb, const Point& pc, const Point& pd) {
@@ -98,8 +80,10 @@ Sign incircle3(const Point& pa, const Point& pb, const Point& pc, const Point& p
                              lift3(tc) * xy(ta, tb, i, j);
     return v.sign() * nk;
   }
-  const Expansion<288> ab = lift3(a) * orient2(b, c, d, i, j) - lift3(b) * orient2(a, c, d, i, j);
-  const Expansion<288> cd = lift3(c) * orient2(a, b, d, i, j) - lift3(d) * orient2(a, b, c, i, j);
+  const Expansion<288> ab = lift3(a) * compressed(orient2(b, c, d, i, j)) -
+                            lift3(b) * compressed(orient2(a, c, d, i, j));
+  const Expansion<288> cd = lift3(c) * compressed(orient2(a, b, d, i, j)) -
+                            lift3(d) * compressed(orient2(a, b, c, i, j));
   return (ab + cd).sign() * nk;
 }
 

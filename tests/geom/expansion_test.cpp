@@ -92,6 +92,21 @@ RC_GTEST_PROP(Expansion, ScaleAndProductAreExact, ()) {
   RC_ASSERT(to_int(p.sign()) == sgn(value(p)));
 }
 
+RC_GTEST_PROP(Expansion, CompressKeepsValueAndValidity, ()) {
+  geomgen::Rng r(geomgen::rc_seed());
+  const auto e = random_expansion<10>(r, -200, 200) * random_expansion<6>(r, -200, 200);
+  const auto c = expansion::compressed(e);
+  RC_ASSERT(valid(c.c, c.n));
+  RC_ASSERT(c.n <= e.n);
+  RC_ASSERT(value(c) == value(e));
+  RC_ASSERT(c.sign() == e.sign());
+  // The largest component approximates the value to within an ulp or so.
+  if (c.n > 0) {
+    const double top = c.c[c.n - 1];
+    RC_ASSERT(std::fabs(top - value(c).get_d()) <= 0x1p-51 * std::fabs(top));
+  }
+}
+
 RC_GTEST_PROP(Expansion, CrossDifferenceIsExact, ()) {
   geomgen::Rng r(geomgen::rc_seed());
   const double a = r.wide(-300, 300), b = r.wide(-300, 300);
