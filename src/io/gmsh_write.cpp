@@ -2,7 +2,6 @@
 // face marker, one volume entity per distinct tet region (physical tag = the value, none for
 // 0), nodes on volume entity 1, elements in MeshData order in blocks of equal markers.
 #include <algorithm>
-#include <limits>
 #include <map>
 #include <vector>
 

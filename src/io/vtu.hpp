@@ -8,8 +8,9 @@
 // (VTK_QUADRATIC_TRIANGLE) faces; other types are counted in ReadInfo::skipped_elements,
 // and a file without tets but with other cells is rejected. Point arrays "pdr_point_marker"
 // and cell arrays "pdr_region" and "pdr_face_marker" (written by pdr) fill the markers.
-// Compressed files (a `compressor` attribute) are rejected with advice to re-export
-// uncompressed.
+// zlib-compressed data (compressor="vtkZLibDataCompressor", ParaView's default) is read
+// when pdr_io was built with zlib; other compressors (LZ4, LZMA), or zlib without it, are
+// rejected with advice to re-export uncompressed.
 //
 // Orientation: VTK_TETRA's documented convention is that points 0,1,2, by the right-hand
 // rule, have a normal pointing toward point 3, i.e. det[b-a, c-a, d-a] > 0; Gmsh 4.8.4's VTK

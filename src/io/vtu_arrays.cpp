@@ -4,9 +4,8 @@
 #include <cstring>
 #include <limits>
 
-#include "io/base64.hpp"
-#include "io/byte_reader.hpp"
 #include "io/text_scanner.hpp"
+#include "io/vtu_payload.hpp"
 
 namespace pdr::io {
 
@@ -26,49 +25,6 @@ constexpr TypeName kTypes[] = {
 };
 
 std::string label(const DataArray& a) { return "DataArray '" + std::string(a.name) + "'"; }
-
-// The payload bytes of a binary or appended array, which must be exactly `bytes` long.
-std::string_view payload(const VtuContext& c, const DataArray& a, std::size_t bytes,
-                         std::string& storage) {
-  const XmlScanner& xml = *c.xml;
-  const std::string_view text = xml.text();
-  const std::size_t hs = c.header64 ? 8 : 4;
-  auto check_header = [&](std::uint64_t n, auto&& fail) {
-    if (n != bytes)
-      fail(label(a) + " holds " + std::to_string(n) + " bytes, expected " +
-           std::to_string(bytes) + " for its values; NumberOfPoints/NumberOfCells or the "
-           "header_type do not match the data");
-  };
-  auto from_base64 = [&](std::string_view encoded, std::size_t where) -> std::string_view {
-    auto fail = [&](const std::string& m) { xml.fail_at(where, m); };
-    Base64Decoder d(encoded);
-    std::string err;
-    std::string head;
-    if (!d.read(hs, head, err)) fail(label(a) + ": " + err + " in its header");
-    std::uint64_t n = 0;
-    if (hs == 8) std::memcpy(&n, head.data(), 8);
-    else { std::uint32_t n32; std::memcpy(&n32, head.data(), 4); n = n32; }
-    check_header(n, fail);
-    storage.clear();
-    if (!d.read(static_cast<std::size_t>(n), storage, err))
-      fail(label(a) + ": " + err + "; the data is truncated or corrupt");
-    return storage;
-  };
-  if (a.format == DataArray::Format::Binary)
-    return from_base64(text.substr(a.content_begin, a.content_end - a.content_begin), a.tag_at);
-  if (c.appended_begin == std::string_view::npos)
-    xml.fail_at(a.tag_at, label(a) + " says format=\"appended\" but the file has no "
-                          "<AppendedData>; the file is truncated");
-  if (a.offset > text.size() - c.appended_begin)
-    xml.fail_at(a.tag_at, label(a) + " offset " + std::to_string(a.offset) + " is beyond the "
-                          "end of the appended data; the file is truncated");
-  const std::size_t start = c.appended_begin + static_cast<std::size_t>(a.offset);
-  if (!c.appended_raw) return from_base64(text.substr(start), a.tag_at);
-  ByteReader r(text, start, xml.file());
-  const std::uint64_t n = r.get_uint(hs, "the array header");
-  check_header(n, [&](const std::string& m) { r.fail_at(start, m); });
-  return r.bytes(static_cast<std::size_t>(n), "the array data");
-}
 
 template <class Src, class Out>
 void convert_as(std::string_view bytes, std::vector<Out>& out, const char*& error) {
@@ -142,7 +98,7 @@ std::vector<Out> decode(const VtuContext& c, const DataArray& a, std::size_t cou
     xml.fail_at(a.tag_at, label(a) + " would need " + std::to_string(count) + " values, more "
                           "than the file can hold; a count is wrong");
   std::string storage;
-  const std::string_view bytes = payload(c, a, count * size, storage);
+  const std::string_view bytes = array_payload(c, a, count * size, storage);
   const char* error = nullptr;
   convert(a.type, bytes, out, error);
   if (error) xml.fail_at(a.tag_at, label(a) + " " + error);

@@ -38,6 +38,7 @@ struct VtuContext {
   bool header64 = false;                        // header_type="UInt64"
   std::size_t appended_begin = std::string_view::npos;  // first byte after the '_'
   bool appended_raw = true;
+  bool zlib = false;                            // compressor="vtkZLibDataCompressor"
 };
 
 // Reads the DataArray tag's attributes; content offsets are filled by the caller.

@@ -9,6 +9,7 @@
 #include "io/text_scanner.hpp"
 #include "io/vtu.hpp"
 #include "io/vtu_arrays.hpp"
+#include "io/vtu_zlib.hpp"
 
 namespace pdr::io {
 
@@ -45,8 +46,10 @@ std::vector<Piece> scan(XmlScanner& xml, VtuContext& ctx) {
     xml.fail_at(tag.begin, "header_type " + std::string(header.substr(0, 20)) +
                                " is not supported; use UInt32 or UInt64");
   ctx.header64 = header == "UInt64";
-  if (!tag.attr("compressor").empty())
-    xml.fail_at(tag.begin, "compressed data (" + std::string(tag.attr("compressor").substr(0, 40)) +
+  const std::string_view compressor = tag.attr("compressor");
+  ctx.zlib = compressor == "vtkZLibDataCompressor" && have_zlib();
+  if (!compressor.empty() && !ctx.zlib)
+    xml.fail_at(tag.begin, "compressed data (" + std::string(compressor.substr(0, 40)) +
                                ") is not supported; re-export uncompressed (ParaView: Save Data "
                                "with Compressor Type None; VTK: SetCompressorTypeToNone())");
 

@@ -133,7 +133,7 @@ std::vector<Case> cases() {
       // VTU
       {"vtu compressed", "v.vtu",
        with_line(kVtu, 1, "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-                          "compressor=\"vtkZLibDataCompressor\">"),
+                          "compressor=\"vtkLZ4DataCompressor\">"),
        1, "re-export uncompressed"},
       {"vtu not grid", "v.vtu", with_line(kVtu, 1, "<VTKFile type=\"PolyData\">"), 1,
        "UnstructuredGrid"},

@@ -6,6 +6,10 @@
 
 #include <cstring>
 
+#if PDR_IO_TEST_ZLIB
+#include <zlib.h>
+#endif
+
 #include "io/base64.hpp"
 #include "io/mesh_io.hpp"
 #include "io/vtu.hpp"
@@ -191,6 +195,95 @@ TEST(Vtu, QuadraticTetAndTwoPieces) {
   EXPECT_EQ(m.points[4], (Point{2, 0, 0}));
   EXPECT_EQ(tet_orientation(m).positive, 2u);
 }
+
+#if PDR_IO_TEST_ZLIB
+// vtkZLibDataCompressor layout: header [#blocks, block size, last block size, compressed
+// sizes...] then the compressed blocks; block size 40 gives several blocks and a short last.
+template <class H>
+std::pair<std::string, std::string> zlib_blocks(const std::string& data) {
+  const std::size_t block = 40;
+  std::vector<H> head = {static_cast<H>((data.size() + block - 1) / block),
+                         static_cast<H>(block), static_cast<H>(data.size() % block)};
+  std::string body;
+  for (std::size_t at = 0; at < data.size(); at += block) {
+    const std::size_t n = std::min(block, data.size() - at);
+    uLongf len = compressBound(static_cast<uLong>(n));
+    std::string out(len, '\0');
+    compress2(reinterpret_cast<Bytef*>(out.data()), &len,
+              reinterpret_cast<const Bytef*>(data.data() + at), static_cast<uLong>(n), 6);
+    out.resize(len);
+    head.push_back(static_cast<H>(len));
+    body += out;
+  }
+  return {raw(head), body};
+}
+
+TEST(Vtu, ZlibCompressedInlineAndAppendedRaw) {
+  ScratchDir dir;
+  const CubeCells c;
+  const std::vector<std::string> arrays = {raw(c.xyz), raw(c.conn), raw(c.offsets),
+                                           raw(c.types)};
+  // Inline binary, UInt32 headers: header and blocks as two base64 streams (VTK's way).
+  auto inline_b64 = [](const std::string& data) {
+    const auto [head, body] = zlib_blocks<std::uint32_t>(data);
+    std::string out;
+    base64_encode(head, out);
+    base64_encode(body, out);
+    return out;
+  };
+  std::string s = "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                  "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n"
+                  "<Piece NumberOfPoints=\"8\" NumberOfCells=\"19\">\n<Points>\n"
+                  "<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"binary\">" +
+                  inline_b64(arrays[0]) + "</DataArray>\n</Points>\n<Cells>\n"
+                  "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"binary\">" +
+                  inline_b64(arrays[1]) + "</DataArray>\n"
+                  "<DataArray type=\"Int64\" Name=\"offsets\" format=\"binary\">" +
+                  inline_b64(arrays[2]) + "</DataArray>\n"
+                  "<DataArray type=\"UInt8\" Name=\"types\" format=\"binary\">" +
+                  inline_b64(arrays[3]) + "</DataArray>\n</Cells>\n</Piece>\n"
+                  "</UnstructuredGrid>\n</VTKFile>\n";
+  write_text(dir / "z1.vtu", s);
+  MeshData want = cube_mesh();
+  want.point_markers.clear();
+  want.tet_regions.clear();
+  want.face_markers.clear();
+  expect_same_mesh(want, read_vtu(dir / "z1.vtu"), true, "zlib inline");
+
+  // Appended raw, UInt64 headers.
+  std::string block;
+  std::vector<std::size_t> offsets;
+  for (const std::string& a : arrays) {
+    offsets.push_back(block.size());
+    const auto [head, body] = zlib_blocks<std::uint64_t>(a);
+    block += head + body;
+  }
+  auto da = [&](const char* type, const char* name, int k, const char* extra = "") {
+    return std::string("<DataArray type=\"") + type + "\" Name=\"" + name + "\" " + extra +
+           "format=\"appended\" offset=\"" + std::to_string(offsets[k]) + "\"/>\n";
+  };
+  s = "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" header_type=\"UInt64\" "
+      "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n"
+      "<Piece NumberOfPoints=\"8\" NumberOfCells=\"19\">\n<Points>\n" +
+      da("Float32", "Points", 0, "NumberOfComponents=\"3\" ") + "</Points>\n<Cells>\n" +
+      da("Int64", "connectivity", 1) + da("Int64", "offsets", 2) + da("UInt8", "types", 3) +
+      "</Cells>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">_" + block +
+      "</AppendedData>\n</VTKFile>\n";
+  write_text(dir / "z2.vtu", s);
+  expect_same_mesh(want, read_vtu(dir / "z2.vtu"), true, "zlib appended raw");
+
+  // A corrupt block is an InputError naming the array.
+  const std::string mark = "<AppendedData encoding=\"raw\">_";
+  s[s.find(mark) + mark.size() + 6 * 8 + 4] ^= 0x55;  // Points: 3 blocks, 6 header words
+  write_text(dir / "z3.vtu", s);
+  try {
+    (void)read_vtu(dir / "z3.vtu");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("DataArray 'Points'"), std::string::npos) << e.what();
+  }
+}
+#endif
 
 TEST(Vtu, WriterEncodingsWithFields) {
   ScratchDir dir;
