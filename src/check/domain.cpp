@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <set>
+#include <map>
 #include <utility>
 
 #include "check/signs.hpp"
@@ -95,8 +95,10 @@ SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const DomainMap& m, con
   return s;
 }
 
-FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const MeshView& mesh,
-                   const PointGrid& grid, double tol) {
+using SegmentIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t>;
+
+FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const SegmentIndex& seg_index,
+                   const MeshView& mesh, const PointGrid& grid, double tol) {
   FacetMap fm;
   std::vector<std::uint32_t> ids;  // mesh ids of the facet's vertices
   bool has_polygon = false;
@@ -161,11 +163,24 @@ FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const MeshView& mesh,
       return fm;
     }
   }
+  // Region polygons through the mesh vertices on their edges (the subsegment chains): with
+  // tolerance-classified vertices the mesh faces tile this polygon exactly, not the input
+  // one; with exact vertices both have the same area and the same interior.
   std::vector<std::vector<P2>> polygons;
   for (const auto& poly : f.polygons) {
     if (poly.size() < 3) continue;
     std::vector<P2> q;
-    for (std::uint32_t v : poly) q.push_back(project(mesh.points[*m.mesh_vertex[v]], drop));
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const std::uint32_t u = poly[i], v = poly[(i + 1) % poly.size()];
+      q.push_back(project(mesh.points[*m.mesh_vertex[u]], drop));
+      const auto it = seg_index.find({std::min(u, v), std::max(u, v)});
+      if (u == v || it == seg_index.end()) continue;
+      const SegmentMap& s = m.segments[it->second];
+      if (s.status != ItemStatus::Ok || s.vertices.size() < 3) continue;
+      std::vector<std::uint32_t> inner(s.vertices.begin() + 1, s.vertices.end() - 1);
+      if (s.a != u) std::reverse(inner.begin(), inner.end());
+      for (std::uint32_t w : inner) q.push_back(project(mesh.points[w], drop));
+    }
     polygons.push_back(std::move(q));
   }
   std::vector<P2> holes;
@@ -244,7 +259,7 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
     if (it != order.end() && !lex_less(p, mesh.points[*it])) m.mesh_vertex[i] = *it;
   }
   const double tol = options.relative_tolerance;
-  std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+  SegmentIndex seg_index;
   for (const PlcFacet& f : domain.facets)
     for (const auto& poly : f.polygons) {
       if (poly.size() < 2) continue;
@@ -252,11 +267,13 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
       for (std::size_t i = 0; i < edges; ++i) {
         std::uint32_t u = poly[i], v = poly[(i + 1) % poly.size()];
         if (u == v || u >= domain.points.size() || v >= domain.points.size()) continue;
-        if (!seen.insert({std::min(u, v), std::max(u, v)}).second) continue;
+        if (!seg_index.emplace(std::pair{std::min(u, v), std::max(u, v)}, m.segments.size()).second)
+          continue;
         m.segments.push_back(map_segment(u, v, m, mesh, grid, tol));
       }
     }
-  for (const PlcFacet& f : domain.facets) m.facets.push_back(map_facet(f, m, mesh, grid, tol));
+  for (const PlcFacet& f : domain.facets)
+    m.facets.push_back(map_facet(f, m, seg_index, mesh, grid, tol));
   assign_faces(m, mesh, topo);
   return m;
 }

@@ -14,7 +14,10 @@
 // How many vertices needed the tolerance is reported ("tolerance_vertices").
 // A mesh face lies in facet F if its three vertices are on F's plane and its centroid lies
 // in F's region (facet_region.hpp); in a conforming mesh no face straddles a segment, so
-// the centroid decides for the whole face.
+// the centroid decides for the whole face. F's region is built from its polygons with the
+// mesh vertices found on each edge inserted in order: when the tolerance was needed, the
+// mesh faces tile that polygon exactly (and not the input one), so areas still compare
+// exactly; with exact vertices the two polygons coincide.
 #pragma once
 
 #include <cstdint>

@@ -38,9 +38,22 @@ std::string upper(std::string_view s) {
 }
 
 void summary_line(std::ostringstream& out, const CheckResult& r) {
-  out << upper(to_string(r.status)) << "  " << r.id << ": " << r.violations << " of " << r.checked
-      << " violate (" << r.invariant << ")";
-  if (!r.reason.empty()) out << "; " << r.reason;
+  const std::string_view tag = r.status == Status::Skipped ? "SKIP" : to_string(r.status);
+  out << upper(tag) << "  " << r.id << ": ";
+  switch (r.status) {
+    case Status::Fail:
+      out << r.violations << " of " << r.checked << " violate: " << r.invariant;
+      break;
+    case Status::Pass:
+      out << r.checked << " checked";
+      break;
+    case Status::Warn:
+      out << r.violations << " of " << r.checked << " flagged";
+      break;
+    case Status::Skipped:
+      break;
+  }
+  if (!r.reason.empty()) out << (r.status == Status::Skipped ? "" : "; ") << r.reason;
   out << "\n";
   std::string extra;
   for (const auto& [k, v] : r.counts) extra += " " + k + "=" + std::to_string(v);

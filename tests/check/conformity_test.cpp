@@ -1,0 +1,150 @@
+// conformity.* and encroachment.* against a domain; FacetRegion; tolerance classification.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "check/facet_region.hpp"
+#include "check_test_util.hpp"
+#include "mesh_gen.hpp"
+
+namespace pdr::check::test {
+namespace {
+
+using Ids = std::set<std::string>;
+
+TEST(Conformity, KuhnGridConformsToItsBox) {
+  const Report r = run(kuhn_grid(3), box_domain(3));
+  EXPECT_TRUE(r.ok()) << to_text(r);
+  for (const char* id : {"conformity.vertices", "conformity.segments", "conformity.facets",
+                         "conformity.volume", "encroachment.subsegments", "encroachment.subfacets"})
+    EXPECT_EQ(result(r, id).status, Status::Pass) << id;
+  EXPECT_EQ(count(r, "conformity.segments", "subsegments"), 12u * 3);
+  EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 6u * 9 * 2);
+  EXPECT_EQ(count(r, "conformity.facets", "tolerance_vertices"), 0u);
+  // The fourth corner of each boundary square lies on its triangles' equatorial spheres.
+  EXPECT_GT(count(r, "encroachment.subfacets", "on_sphere"), 0u);
+}
+
+TEST(Conformity, MissingInputVertexFailsOnlyVertices) {
+  Plc d = box_domain(3);
+  d.points.push_back({1.5, 1.5, 1.5});
+  const Report r = run(kuhn_grid(3), d);
+  EXPECT_EQ(failed(r), Ids{"conformity.vertices"}) << to_text(r);
+  EXPECT_EQ(result(r, "conformity.vertices").findings.at(0).id, 8u);
+}
+
+TEST(Conformity, DeletedBoundaryTetFailsFacetsAndVolume) {
+  MeshData m = kuhn_grid(3);
+  m.tets.erase(m.tets.begin() + 4 * 6);  // cube (1,1,0): its tet on the bottom facet
+  const Report r = run(m, box_domain(3));
+  EXPECT_EQ(failed(r), (Ids{"conformity.facets", "conformity.volume"})) << to_text(r);
+  EXPECT_EQ(result(r, "conformity.facets").findings.at(0).id, 0u);  // the bottom facet
+}
+
+TEST(Conformity, DeletedInteriorTetFailsVolume) {
+  MeshData m = kuhn_grid(3);
+  m.tets.erase(m.tets.begin() + 13 * 6 + 1);
+  const Report r = run(m, box_domain(3));
+  EXPECT_EQ(failed(r), Ids{"conformity.volume"}) << to_text(r);
+  EXPECT_EQ(count(r, "conformity.volume", "boundary_faces_off_facets"), 4u);
+}
+
+TEST(Conformity, HoleAndRegionPointsAreLocated) {
+  Plc d = box_domain(2);
+  d.holes.push_back({1.25, 0.5, 0.75});
+  d.regions.push_back({{5, 5, 5}, 1.0, -1, 0});
+  d.regions.push_back({{0.5, 0.5, 0.5}, 2.0, -1, 0});
+  const Report r = run(kuhn_grid(2), d);
+  EXPECT_EQ(failed(r), Ids{"conformity.volume"});
+  EXPECT_EQ(count(r, "conformity.volume", "filled_holes"), 1u);
+  EXPECT_EQ(count(r, "conformity.volume", "empty_regions"), 1u);
+}
+
+TEST(Conformity, InternalFacetIsCoveredByInteriorFaces) {
+  Plc d = box_domain(3);
+  for (int k = 0; k < 4; ++k) d.points.push_back({k % 2 * 3.0, k / 2 * 3.0, 1.0});
+  PlcFacet f;
+  f.polygons.push_back({8, 9, 11, 10});
+  d.facets.push_back(f);
+  const Report r = run(kuhn_grid(3), d);
+  EXPECT_TRUE(r.ok()) << to_text(r);
+  EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 6u * 9 * 2 + 9 * 2);
+}
+
+TEST(Encroachment, VertexNearASubsegmentFails) {
+  MeshData m = kuhn_grid(3);
+  m.points[grid_id(3, 1, 1, 1)] = {0.3, 0.3, 0.3};  // 70% along the edge to the corner
+  const Report r = run(m, box_domain(3));
+  EXPECT_TRUE(failed(r).count("encroachment.subsegments")) << to_text(r);
+  EXPECT_EQ(result(r, "validity.orientation").status, Status::Pass);
+  const Finding& f = result(r, "encroachment.subsegments").findings.at(0);
+  EXPECT_EQ(f.vertices.back(), grid_id(3, 1, 1, 1));
+}
+
+TEST(Encroachment, VertexNearASubfacetFailsSubfacetsOnly) {
+  MeshData m = kuhn_grid(4);
+  m.points[grid_id(4, 2, 2, 1)] = {1.6, 1.6, 0.6};  // 40% along the edge to (1,1,0)
+  const Report r = run(m, box_domain(4));
+  EXPECT_TRUE(failed(r).count("encroachment.subfacets")) << to_text(r);
+  EXPECT_EQ(result(r, "encroachment.subsegments").status, Status::Pass);
+  EXPECT_EQ(result(r, "validity.orientation").status, Status::Pass);
+  for (const char* id : {"conformity.segments", "conformity.facets", "conformity.volume"})
+    EXPECT_EQ(result(r, id).status, Status::Pass) << id;
+}
+
+// Rotating a grid rounds its coordinates: vertices on tilted facets and segments are no
+// longer exactly coplanar or collinear. The relative tolerance classifies them; areas and
+// orders stay exact.
+Point rotate(const Point& p) {
+  const double c = std::cos(0.3), s = std::sin(0.3), c2 = std::cos(0.7), s2 = std::sin(0.7);
+  const Point q = {c * p[0] - s * p[1], s * p[0] + c * p[1], p[2]};
+  return {q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2]};
+}
+
+TEST(Conformity, ToleranceClassifiesRoundedVertices) {
+  MeshData m = kuhn_grid(2);
+  for (Point& p : m.points) p = rotate(p);
+  Plc d = box_domain(2);
+  for (Point& p : d.points) p = rotate(p);
+  const Report r = run(m, d);
+  for (const char* id : {"conformity.vertices", "conformity.segments", "conformity.facets", "conformity.volume"})
+    EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
+  EXPECT_GT(count(r, "conformity.segments", "tolerance_vertices"), 0u);
+  EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
+  Options exact_only;
+  exact_only.relative_tolerance = 0;
+  const Report e = run(m, d, exact_only);
+  EXPECT_EQ(result(e, "conformity.segments").status, Status::Fail);
+  EXPECT_EQ(result(e, "conformity.volume").status, Status::Fail);
+  EXPECT_NE(result(e, "conformity.facets").status, Status::Pass);
+}
+
+TEST(FacetRegion, NestedPolygonWithHoleIsARing) {
+  const std::vector<P2> outer = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  const std::vector<P2> inner = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+  const FacetRegion ring({outer, inner}, {{2, 2}});
+  ASSERT_TRUE(ring.supported());
+  EXPECT_EQ(ring.area2(), 24);
+  EXPECT_EQ(ring.locate(Q2::at({2, 2})), Where::Outside);
+  EXPECT_EQ(ring.locate(Q2::at({0.5, 2})), Where::Inside);
+  EXPECT_EQ(ring.locate(Q2::at({1, 2})), Where::Boundary);
+  EXPECT_EQ(ring.locate(Q2::at({5, 2})), Where::Outside);
+  EXPECT_EQ(ring.locate(Q2::centroid({0, 0}, {1, 0}, {0, 1})), Where::Inside);
+  const FacetRegion full({outer, inner}, {});
+  EXPECT_EQ(full.area2(), 32);
+  EXPECT_EQ(full.locate(Q2::at({2, 2})), Where::Inside);
+  const FacetRegion crossing({outer, {{3, 3}, {5, 3}, {5, 5}, {3, 5}}}, {});
+  EXPECT_FALSE(crossing.supported());
+}
+
+TEST(FacetRegion, NonConvexPolygon) {
+  const std::vector<P2> ell = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  const FacetRegion r({ell}, {});
+  EXPECT_EQ(r.area2(), 6);
+  EXPECT_EQ(r.locate(Q2::at({1.5, 1.5})), Where::Outside);
+  EXPECT_EQ(r.locate(Q2::centroid({1, 1}, {2, 1}, {1, 2})), Where::Outside);
+  EXPECT_EQ(r.locate(Q2::centroid({0, 0}, {1, 0}, {0, 1})), Where::Inside);
+}
+
+}  // namespace
+}  // namespace pdr::check::test

@@ -1,0 +1,131 @@
+// delaunay.empty_sphere: the grid-accelerated checker agrees with a brute-force GMP oracle
+// (every tet against every vertex); cospherical vertices are counted, not failed; reports
+// do not depend on the thread count.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "check_test_util.hpp"
+#include "mesh_gen.hpp"
+
+namespace pdr::check::test {
+namespace {
+
+using Ids = std::set<std::string>;
+
+TEST(Delaunay, CubeVerticesAreCosphericalNotInside) {
+  const Report r = run(kuhn_grid(1));
+  EXPECT_TRUE(r.ok()) << to_text(r);
+  EXPECT_EQ(count(r, "delaunay.empty_sphere", "cospherical"), 6u * 4);
+}
+
+TEST(Delaunay, MovedVertexFailsOnlyEmptySphere) {
+  MeshData m = kuhn_grid(3);
+  const std::uint32_t v = grid_id(3, 1, 1, 1);
+  m.points[v] = {1.0625, 1.125, 0.9375};  // stays inside its star: orientation holds
+  const Report r = run(m);
+  EXPECT_EQ(failed(r), Ids{"delaunay.empty_sphere"}) << to_text(r);
+  const Finding& f = result(r, "delaunay.empty_sphere").findings.at(0);
+  EXPECT_EQ(f.kind, "tet");
+  EXPECT_EQ(f.vertices.size(), 5u);
+}
+
+TEST(Delaunay, MovedVertexFarAwayAlsoInvertsTets) {
+  MeshData m = kuhn_grid(3);
+  m.points[grid_id(3, 1, 1, 1)] = {2.5, 2.5, 2.5};
+  const Report r = run(m);
+  EXPECT_TRUE(failed(r).count("validity.orientation")) << to_text(r);
+}
+
+TEST(Delaunay, NonConvexMeshIsCheckedAgainstAllVertices) {
+  // Two tets far apart plus a vertex of one inside the other's circumsphere: they share
+  // nothing, so a neighbours-only test would miss it.
+  MeshData m;
+  m.points = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}, {1, 1, 1},
+              {1.2, 1.1, 1.3}, {1.25, 1.1, 1.3}, {1.2, 1.15, 1.3}, {1.2, 1.1, 1.35}};
+  m.tets = {{5, 6, 7, 8}};
+  m.tets.push_back({0, 1, 2, 3});
+  const Report r = run(m);
+  EXPECT_TRUE(failed(r).count("delaunay.empty_sphere"));
+  EXPECT_EQ(result(r, "delaunay.empty_sphere").findings.at(0).id, 1u);
+}
+
+TEST(Delaunay, ReportDoesNotDependOnThreads) {
+  MeshData m = kuhn_grid(4);
+  for (std::size_t i = 0; i < m.points.size(); i += 7) m.points[i][0] += 0.0625;
+  Options o;
+  o.max_reported = 5;
+  std::string first;
+  for (unsigned t : {1u, 2u, 3u}) {
+    o.threads = t;
+    nlohmann::json j = to_json(run(m, o));
+    j["options"].erase("threads");
+    if (first.empty()) first = j.dump();
+    EXPECT_EQ(j.dump(), first) << "threads=" << t;
+  }
+}
+
+// Random small meshes: a jittered Kuhn cube (dyadic jitter hits exact ties, arbitrary
+// doubles exercise the GMP path; tets may even invert) plus extra unreferenced points,
+// which every circumsphere must also exclude. The checker's verdict must equal the
+// brute-force oracle's (which costs a 5x5 GMP determinant per pair: keep meshes small).
+MeshData jittered_cube(const std::vector<int>& jit, const std::vector<double>& noise,
+                       const std::vector<int>& extra) {
+  MeshData m = kuhn_grid(1);
+  for (std::size_t i = 0; i + 2 < extra.size(); i += 3)
+    m.points.push_back({extra[i] * 0.125, extra[i + 1] * 0.125, extra[i + 2] * 0.125});
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t k = 3 * i + static_cast<std::size_t>(c);
+      m.points[i][c] += jit[k % jit.size()] * 0.0625 + noise[k % noise.size()];
+    }
+  return m;
+}
+
+void expect_agrees_with_oracle(const MeshData& m) {
+  Options o;
+  o.max_reported = 1000;
+  const Report r = run(m, o);
+  const OracleVerdict v = delaunay_oracle(m);
+  const CheckResult& d = result(r, "delaunay.empty_sphere");
+  RC_ASSERT(d.violations == v.violating_tets.size());
+  RC_ASSERT(count(r, "delaunay.empty_sphere", "violating_pairs") == v.violating_pairs);
+  RC_ASSERT(count(r, "delaunay.empty_sphere", "cospherical") == v.cospherical);
+  std::set<std::uint64_t> ids;
+  for (const Finding& f : d.findings) ids.insert(f.id);
+  RC_ASSERT(ids == v.violating_tets);
+}
+
+RC_GTEST_PROP(Delaunay, AgreesWithBruteForceOracleOnDyadicJitter, ()) {
+  const auto jit = *rc::gen::container<std::vector<int>>(42, rc::gen::inRange(-3, 4));
+  const auto extra = *rc::gen::container<std::vector<int>>(18, rc::gen::inRange(-2, 11));
+  expect_agrees_with_oracle(jittered_cube(jit, {0.0}, extra));
+}
+
+RC_GTEST_PROP(Delaunay, AgreesWithBruteForceOracleOnArbitraryNoise, ()) {
+  const auto jit = *rc::gen::container<std::vector<int>>(42, rc::gen::inRange(-2, 3));
+  const auto raw = *rc::gen::container<std::vector<int>>(42, rc::gen::inRange(-1000, 1001));
+  const auto extra = *rc::gen::container<std::vector<int>>(18, rc::gen::inRange(-2, 11));
+  std::vector<double> noise;
+  const double scale = *rc::gen::element(1e-3, 1e-9, 1e-15);
+  for (int x : raw) noise.push_back(x * scale / 1000.0);
+  expect_agrees_with_oracle(jittered_cube(jit, noise, extra));
+}
+
+TEST(Delaunay, AgreesWithBruteForceOracleOnAJitteredGrid) {
+  MeshData m = kuhn_grid(2);
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    m.points[i][i % 3] += (static_cast<int>(i * 7 % 5) - 2) * 0.0625;
+  Options o;
+  o.max_reported = 1000;
+  const Report r = run(m, o);
+  const OracleVerdict v = delaunay_oracle(m);
+  EXPECT_GT(v.violating_tets.size(), 0u);
+  EXPECT_EQ(result(r, "delaunay.empty_sphere").violations, v.violating_tets.size());
+  EXPECT_EQ(count(r, "delaunay.empty_sphere", "cospherical"), v.cospherical);
+}
+
+}  // namespace
+}  // namespace pdr::check::test

@@ -1,0 +1,136 @@
+// The checkers' exact signs: every stage agrees with GMP whenever it decides, on random,
+// near-degenerate and grid input; sign conventions; interval enclosures.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <gmpxx.h>
+
+#include "check/circumball.hpp"
+#include "check/interval.hpp"
+#include "check/signs.hpp"
+#include "geom/exact.hpp"
+
+namespace pdr::check {
+namespace {
+
+// Points: arbitrary doubles, small dyadic grid points, or grid points nudged by an ulp.
+rc::Gen<Point> point_gen() {
+  return rc::gen::oneOf(
+      rc::gen::map(rc::gen::container<std::vector<int>>(3, rc::gen::inRange(-8, 9)),
+                   [](const std::vector<int>& v) { return Point{v[0] * 0.25, v[1] * 0.25, v[2] * 0.25}; }),
+      rc::gen::map(rc::gen::container<std::vector<int>>(3, rc::gen::inRange(-8, 9)),
+                   [](const std::vector<int>& v) {
+                     return Point{std::nextafter(v[0] * 0.25, 1.0), v[1] * 0.25, v[2] * 0.25 + 1e-17};
+                   }),
+      rc::gen::map(rc::gen::container<std::vector<int>>(3, rc::gen::inRange(-1000000, 1000001)),
+                   [](const std::vector<int>& v) { return Point{v[0] / 3e5, v[1] / 7e5, v[2] / 1.1e6}; }));
+}
+
+RC_GTEST_PROP(Signs, Orient3dAgreesWithGmp, ()) {
+  const Point a = *point_gen(), b = *point_gen(), c = *point_gen(), d = *point_gen();
+  const Sign ref = exact::orient3d(a, b, c, d);
+  RC_ASSERT(signs::orient3d(a, b, c, d) == ref);
+  if (auto s = signs::orient3d_filter(a, b, c, d)) RC_ASSERT(*s == ref);
+  if (auto s = signs::orient3d_int(a, b, c, d)) RC_ASSERT(*s == ref);
+  RC_ASSERT(signs::det3(a, b, a, c, a, d) == ref);
+}
+
+RC_GTEST_PROP(Signs, InsphereAgreesWithGmp, ()) {
+  const Point a = *point_gen(), b = *point_gen(), c = *point_gen(), d = *point_gen(), e = *point_gen();
+  const Sign ref = exact::insphere(a, b, c, d, e);
+  RC_ASSERT(signs::insphere(a, b, c, d, e) == ref);
+  if (auto s = signs::insphere_filter(a, b, c, d, e)) RC_ASSERT(*s == ref);
+  if (auto s = signs::insphere_int(a, b, c, d, e)) RC_ASSERT(*s == ref);
+}
+
+RC_GTEST_PROP(Signs, Det3OfDifferencesAgreesWithGmp, ()) {
+  const Point a0 = *point_gen(), a1 = *point_gen(), b0 = *point_gen(), b1 = *point_gen(),
+              c0 = *point_gen(), c1 = *point_gen();
+  using Q = mpq_class;
+  auto d = [](const Point& p, const Point& q, int i) -> Q { return Q(q[i]) - Q(p[i]); };
+  const Q ux = d(a0, a1, 0), uy = d(a0, a1, 1), uz = d(a0, a1, 2);
+  const Q vx = d(b0, b1, 0), vy = d(b0, b1, 1), vz = d(b0, b1, 2);
+  const Q wx = d(c0, c1, 0), wy = d(c0, c1, 1), wz = d(c0, c1, 2);
+  const Q det = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
+  RC_ASSERT(signs::det3(a0, a1, b0, b1, c0, c1) == sign_of(sgn(det)));
+}
+
+// p inside the equatorial sphere of abc iff |p - o|^2 < |a - o|^2, o solved directly from
+// (o - a).u = |u|^2 / 2, (o - a).v = |v|^2 / 2, (o - a).n = 0 by Cramer's rule.
+RC_GTEST_PROP(Signs, EquatorialAgreesWithDirectCircumcenter, ()) {
+  const Point a = *point_gen(), b = *point_gen(), c = *point_gen(), p = *point_gen();
+  using Q = mpq_class;
+  using V = std::array<Q, 3>;
+  auto sub = [](const Point& x, const Point& y) { return V{Q(x[0]) - y[0], Q(x[1]) - y[1], Q(x[2]) - y[2]}; };
+  auto dot = [](const V& x, const V& y) { return Q(x[0] * y[0] + x[1] * y[1] + x[2] * y[2]); };
+  auto cross = [](const V& x, const V& y) {
+    return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
+  const V u = sub(b, a), v = sub(c, a), n = cross(u, v);
+  RC_PRE(sgn(dot(n, n)) != 0);
+  auto det = [&](const V& r0, const V& r1, const V& r2) { return dot(r0, cross(r1, r2)); };
+  const Q D = det(u, v, n);
+  const V rhs = {dot(u, u) / 2, dot(v, v) / 2, Q(0)};
+  V o;  // o - a
+  for (int i = 0; i < 3; ++i) {
+    V c0 = {u[0], v[0], n[0]}, c1 = {u[1], v[1], n[1]}, c2 = {u[2], v[2], n[2]};
+    V* cols[3] = {&c0, &c1, &c2};
+    *cols[i] = rhs;
+    o[i] = det(V{c0[0], c1[0], c2[0]}, V{c0[1], c1[1], c2[1]}, V{c0[2], c1[2], c2[2]}) / D;
+  }
+  const V w = sub(p, a);
+  const V pw = {w[0] - o[0], w[1] - o[1], w[2] - o[2]};
+  const Sign ref = sign_of(sgn(dot(o, o) - dot(pw, pw)));
+  RC_ASSERT(signs::equatorial(a, b, c, p) == ref);
+}
+
+RC_GTEST_PROP(Signs, DotAgreesWithGmp, ()) {
+  const Point p = *point_gen(), a = *point_gen(), q = *point_gen(), b = *point_gen();
+  using Q = mpq_class;
+  Q s = 0;
+  for (int i = 0; i < 3; ++i) s += (Q(p[i]) - a[i]) * (Q(q[i]) - b[i]);
+  RC_ASSERT(signs::dot(p, a, q, b) == sign_of(sgn(s)));
+}
+
+TEST(Signs, Conventions) {
+  const Point a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
+  EXPECT_EQ(signs::orient3d(a, b, c, d), Sign::Positive);
+  EXPECT_EQ(signs::insphere(a, b, c, d, {0.25, 0.25, 0.25}), Sign::Positive);
+  EXPECT_EQ(signs::insphere(a, b, c, d, {1, 1, 1}), Sign::Zero);
+  EXPECT_EQ(signs::insphere(a, b, c, d, {2, 2, 2}), Sign::Negative);
+  EXPECT_EQ(signs::insphere(b, a, c, d, {0.25, 0.25, 0.25}), Sign::Negative);
+  EXPECT_EQ(signs::equatorial(b, c, d, {0.3, 0.3, 0.3}), Sign::Positive);
+  EXPECT_EQ(signs::equatorial(b, c, d, a), Sign::Positive);  // |a - o|^2 = 1/3 < 2/3
+  EXPECT_EQ(signs::equatorial(b, c, d, {-1, -1, -1}), Sign::Negative);
+  // Triangle (0,0,0), (2,0,0), (0,2,0): centre (1,1,0), r^2 = 2.
+  EXPECT_EQ(signs::equatorial(a, {2, 0, 0}, {0, 2, 0}, {2, 1, 1}), Sign::Zero);
+  EXPECT_EQ(signs::equatorial(a, {2, 0, 0}, {0, 2, 0}, {2, 1, 1.0625}), Sign::Negative);
+}
+
+// Far-apart magnitudes defeat the integer stage and the filter's range guard: GMP decides.
+TEST(Signs, ExtremeMagnitudesFallBackToGmp) {
+  const Point a{1e-200, 0, 0}, b{1e200, 0, 0}, c{0, 1e-200, 0}, d{0, 0, 1e-200};
+  EXPECT_EQ(signs::orient3d(a, b, c, d), exact::orient3d(a, b, c, d));
+  EXPECT_EQ(signs::insphere(a, b, c, d, {1e-201, 1e-201, 1e-201}),
+            exact::insphere(a, b, c, d, {1e-201, 1e-201, 1e-201}));
+}
+
+RC_GTEST_PROP(Interval, CircumballEnclosesTheExactCenter, ()) {
+  const Point a = *point_gen(), b = *point_gen(), c = *point_gen(), d = *point_gen();
+  RC_PRE(exact::orient3d(a, b, c, d) != Sign::Zero);
+  const BallEnclosure ball = circumball(a, b, c, d);
+  const auto x = exact::circumcenter(a, b, c, d);
+  for (int i = 0; i < 3; ++i) {
+    RC_ASSERT(mpq_class(ball.center[i].lo) <= x[i]);
+    RC_ASSERT(x[i] <= mpq_class(ball.center[i].hi));
+  }
+  const mpq_class r2 = exact::circumradius2(a, b, c, d);
+  RC_ASSERT(mpq_class(ball.r2.lo) <= r2);
+  RC_ASSERT(r2 <= mpq_class(ball.r2.hi));
+  const Box box = enclosing_box(ball);
+  for (const Point* p : {&a, &b, &c, &d})
+    for (int i = 0; i < 3; ++i) RC_ASSERT(box.lo[i] <= (*p)[i] && (*p)[i] <= box.hi[i]);
+}
+
+}  // namespace
+}  // namespace pdr::check
