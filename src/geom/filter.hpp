@@ -20,11 +20,17 @@
 // so the bound also holds if the compiler contracts (this header may be inlined anywhere).
 // Overflow makes det or P infinite or NaN; every comparison then fails: Unsure.
 //
-// Range (no underflow; checked in tests/geom): if every coordinate is 0 or of magnitude in
-// [2^-E, 2^E], every nonzero intermediate stays a normal double, and stage 2 is exact too:
-// E = 450 for orient2d, 270 for orient3d, 190 for incircle and incircle3, 130 for insphere.
-// (Coordinates are multiples of l = 2^(-E-52); a nonzero product of d rounded differences is
-// >= l^d and each cancellation costs at most 2^-53, e.g. insphere: 2^-106 l^5 >= 2^-1022.)
+// Range (no underflow, no overflow; tested in tests/geom): if every coordinate is an
+// integer multiple of l = 2^(-E-52) of magnitude at most 2^E (so 0 and every double in
+// [2^-E, 2^E] qualify), every nonzero intermediate of the filters is a normal double, and
+// stage 2 is exact too: E = 450 for orient2d, 270 for orient3d, 190 for incircle and
+// incircle3, 130 for insphere. Proof sketch: differences are multiples of l, so a nonzero
+// rounded difference is >= l; a rounded product of such values is >= their product; a
+// cancelling sum of doubles >= x is >= 2^-53 x. Insphere: lift >= l^2, 3x3 minor >=
+// 2^-106 l^3, so the smallest product is >= 2^-106 l^5 >= 2^-1022 for E <= 131; its
+// permanent is <= 2^(5E+12) < 2^1023. Stage 2's components are multiples of l^degree
+// (>= 2^-1074) and its split arguments stay below 2^995. Likewise orient2d: l^2;
+// orient3d: 2^-53 l^3; incircle(3): 2^-53 l^4.
 #pragma once
 
 #include <cmath>

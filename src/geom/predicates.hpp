@@ -3,7 +3,8 @@
 // Every function returns the exact sign of a polynomial in the input doubles, as if the
 // doubles were rationals. Stage 1 is a floating-point filter with a proven error bound
 // (filter.hpp); stage 2 is exact expansion arithmetic (expansion.hpp); the *_sos variants
-// add stage 3, symbolic perturbation (sos.cpp). Compiled with -ffp-contract=off.
+// add stage 3, symbolic perturbation (sos.cpp). Stage 2 and 3 live in pdr_geom, compiled
+// with -ffp-contract=off; the inline filters stay correct wherever they are inlined.
 //
 // Conventions and laws (each is a RapidCheck property in tests/geom):
 //   orient2d(a,b,c)     = sign det[b-a, c-a]              > 0: a,b,c counter-clockwise.
@@ -16,7 +17,8 @@
 //   sign with the orientation of their first three/four points.
 //   incircle3(a,b,c,d): for coplanar a,b,c,d (precondition, unchecked beyond debug), the
 //   sign of "d strictly inside the circle through a,b,c"; orientation-free (the plane has
-//   no preferred side). Positive = inside, Negative = outside, Zero = on the circle.
+//   no preferred side). Positive = inside, Negative = outside, Zero = on the circle, and
+//   Zero if a,b,c are collinear. Non-coplanar input gives an unspecified (deterministic) sign.
 //
 // Symbolic perturbation (SoS). The lifted coordinate |p|^2 of the point of lexicographic
 // rank i (rank by lex_less over the points of one call) is raised by eps^(2^i)-style
@@ -39,10 +41,11 @@
 //   incircle_sos(a,b,c,d):   a: +o(b,c,d)  b: -o(a,c,d)  c: +o(a,b,d)  d: -o(a,b,c)
 //   incircle3_sos(a,b,c,d):  the incircle_sos cofactors times o2(a,b,c).
 //
-// Input range: the adaptive predicates are exact when every coordinate is 0 or of
-// magnitude in [2^-E, 2^E], E = 450 (orient2d), 270 (orient3d), 190 (incircle, incircle3
-// and their _sos), 130 (insphere, insphere_sos); beyond it underflow may spoil a sign
-// (see filter.hpp). exact.hpp has no range limit. Infinities and NaNs are not allowed.
+// Input range: the adaptive predicates are exact when every coordinate is an integer
+// multiple of 2^(-E-52) of magnitude at most 2^E (e.g. 0, or any double with magnitude in
+// [2^-E, 2^E]), E = 450 (orient2d), 270 (orient3d), 190 (incircle, incircle3 and their
+// _sos), 130 (insphere, insphere_sos): about 1e+-135, 1e+-81, 1e+-57, 1e+-39. Beyond it,
+// underflow may spoil a sign (filter.hpp); exact.hpp has no range limit. No inf or NaN.
 //
 // Speed: the filter is inline (filter.hpp, no allocation, proven bound valid even under
 // FMA contraction); stage 2 is out of line in pdr_geom (stage2.hpp, stack arrays only).

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace pdr {
 namespace {
 
@@ -57,6 +59,26 @@ TEST(ExactSos, NeverZeroOnNonDegenerateInput) {
   const double a[2] = {0, 0}, b[2] = {1, 0}, c[2] = {0, 1}, d[2] = {1, 1};
   EXPECT_NE(exact::incircle_sos(a, b, c, d), Sign::Zero);
   EXPECT_EQ(exact::incircle_sos(a, b, c, d), -exact::incircle_sos(b, a, c, d));
+}
+
+// The reference has no range limit: a lattice sphere scaled by 2^+-1000 and down to the
+// smallest subnormal (products of coordinates underflow or overflow in double) keeps
+// every exact sign.
+TEST(ExactRange, ExtremeScales) {
+  const double lattice[6][3] = {{3, 4, 0}, {-3, 4, 0}, {0, 0, 5}, {0, -5, 0}, {4, 0, 3},
+                                {5, 0, 0}};
+  for (const double s : {0x1p-1000, 0x1p-1074, 0x1p+1000, 0x1p+1019}) {
+    Point p[6];
+    for (int k = 0; k < 6; ++k)
+      for (int i = 0; i < 3; ++i) p[k][i] = lattice[k][i] * s;
+    EXPECT_EQ(exact::insphere(p[0], p[1], p[2], p[3], p[5]), Sign::Zero) << s;
+    const Sign o = exact::orient3d(p[0], p[1], p[2], p[3]);
+    EXPECT_EQ(o, Sign::Negative) << s;
+    Point in = p[5];
+    in[0] = std::nextafter(in[0], 0.0);  // one ulp inside
+    EXPECT_EQ(exact::insphere(p[0], p[1], p[2], p[3], in), o) << s;
+    EXPECT_NE(exact::insphere_sos(p[0], p[1], p[2], p[3], p[5]), Sign::Zero) << s;
+  }
 }
 
 TEST(ExactMeasures, UnitSimplex) {

@@ -180,7 +180,11 @@ template <std::size_t N>
 std::array<Point2, N> flat_case(Rng& r, Kind kind, int E) {
   std::array<Point2, N> p;
   const double s = r.scale(E - 8);
-  if (kind == Kind::NearDegenerate) {
+  if (kind == Kind::NearDegenerate && N == 3) {  // the last point near the line of two
+    for (std::size_t k = 0; k < 2; ++k) p[k] = {r.uniform(-1, 1) * s, r.uniform(-1, 1) * s};
+    const double t = r.uniform(-2, 2);
+    for (int i = 0; i < 2; ++i) p[2][i] = r.nudge(p[0][i] + t * (p[1][i] - p[0][i]), 3);
+  } else if (kind == Kind::NearDegenerate) {  // the last point near the circle of the others
     const double cx = r.uniform(-1, 1), cy = r.uniform(-1, 1), rad = r.uniform(0.1, 2);
     for (auto& q : p) {
       const double t = r.uniform(0, 6.283185307179586);
@@ -203,7 +207,8 @@ std::array<Point2, N> flat_case(Rng& r, Kind kind, int E) {
 
 // N coplanar points (exactly) for incircle3. Grid and Lattice kinds: integer points
 // o + iU + jV of a tilted plane (kPlaneFrames), Lattice ones on one circle of it. The
-// other kinds: flat_case placed on a coordinate plane at a random level, or on x = y.
+// other kinds: flat_case placed on a coordinate plane at a random level, or on x = y
+// (NearDegenerate there: near a circle of that tilted plane).
 template <std::size_t N>
 std::array<Point, N> plane_case(Rng& r, Kind kind, int E) {
   std::array<Point, N> p;
@@ -222,17 +227,27 @@ std::array<Point, N> plane_case(Rng& r, Kind kind, int E) {
     }
     return p;
   }
-  const std::array<Point2, N> flat = flat_case<N>(r, kind, E);
+  std::array<Point2, N> flat = flat_case<N>(r, kind, E);
   const double level = r.coin() ? 0.0 : fit(r.wide(-E / 2, E / 2 - 1), E);
   const int plane = r.integer(0, 3);
+  if (plane == 3 && kind == Kind::NearDegenerate) {
+    // On x = y, |(s, s, t)|^2 = 2 s^2 + t^2: a circle of the plane is an ellipse in (s, t).
+    const double cs = r.uniform(-1, 1), ct = r.uniform(-1, 1), rad = r.uniform(0.1, 2);
+    const double sc = r.scale(E - 8);
+    for (auto& q : flat) {
+      const double t = r.uniform(0, 6.283185307179586);
+      q = {fit((cs + rad * std::cos(t) / std::sqrt(2.0)) * sc, E),
+           fit((ct + rad * std::sin(t)) * sc, E)};
+    }
+    flat[N - 1] = {fit(r.nudge(flat[N - 1][0], 3), E), fit(r.nudge(flat[N - 1][1], 3), E)};
+  }
   for (std::size_t k = 0; k < N; ++k) {
     const double x = flat[k][0], y = flat[k][1];
     switch (plane) {
       case 0: p[k] = {x, y, level}; break;
       case 1: p[k] = {level, x, y}; break;
       case 2: p[k] = {y, level, x}; break;
-      default: p[k] = {x, x, y}; break;  // the plane x = y (circles there are not circles
-                                         // of (x, y): these cases are generic)
+      default: p[k] = {x, x, y}; break;  // the plane x = y
     }
   }
   return p;

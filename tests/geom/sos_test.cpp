@@ -121,6 +121,7 @@ RC_GTEST_PROP(Sos, Incircle3SosIsInsphereSosOnThePlane, ()) {
   for (int k = 0; k < 3; ++k) q[k] = geomgen::fit(p[0][k] + g[k] * s, geomgen::kInsphereRange);
   const Sign side = orient3d(p[0], p[1], p[2], q);
   RC_PRE(side != Sign::Zero);
+  RC_CLASSIFY(incircle3(p[0], p[1], p[2], p[3]) == Sign::Zero, "cocircular");
   RC_ASSERT(incircle3_sos(p[0], p[1], p[2], p[3]) ==
             insphere_sos(p[0], p[1], p[2], q, p[3]) * side);
 }
