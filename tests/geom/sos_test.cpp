@@ -138,7 +138,7 @@ RC_GTEST_PROP(Sos, Incircle3SosIsIncircleSosOnFlatPlanes, ()) {
 }
 
 // Cocircular and cospherical lattice sets: every call is degenerate, SoS decides.
-TEST(Sos, CospherialLatticeNeverZero) {
+TEST(Sos, CosphericalLatticeNeverZero) {
   std::array<Point, 30> sphere;  // the 30 integer points with |p|^2 = 9, shifted
   int n = 0;
   for (int x = -3; x <= 3; ++x)
