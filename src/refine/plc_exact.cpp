@@ -1,6 +1,7 @@
 // Exact helpers for the domain analysis (paper §1.1); see plc_exact.hpp.
 #include "refine/plc_exact.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geom/predicates.hpp"
@@ -95,6 +96,59 @@ Sign orient3d_q(const QPoint& a, const QPoint& b, const QPoint& c, const QPoint&
   const mpq_class det =
       bx * (cy * dz - cz * dy) - by * (cx * dz - cz * dx) + bz * (cx * dy - cy * dx);
   return sign_of(sgn(det));
+}
+
+RatPoint make_rat(const QPoint& q) {
+  RatPoint r;
+  r.q = q;
+  double m = 0;
+  for (int k = 0; k < 3; ++k) {
+    r.d[k] = q[k].get_d();  // truncates: |q - d| < ulp(d) <= 2^-52 |d| (or a subnormal)
+    m = std::max(m, std::fabs(r.d[k]));
+  }
+  r.err = 0x1p-51 * m + 0x1p-1000;
+  return r;
+}
+
+RatPoint make_rat(const Point& p) { return {to_q(p), p, 0}; }
+
+// Filters. For a determinant D that is linear in o, D(o) = D(d) + g.(o - d) with g its
+// gradient in o, so |D(o) - D_fl(d)| <= |D(d) - D_fl(d)| + |g|_1 err. The rounding part is
+// below 16u times the permanent (a few roundings per term, Higham's gamma_k, k <= 10),
+// taken as 1e-14 * permanent; |g|_1 is computed from rounded differences, so it is
+// enlarged by 1%. Tiny or huge magnitudes (possible underflow, overflow) go exact.
+Sign orient3d_rat(const Point& a, const Point& b, const Point& c, const RatPoint& o) {
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double wx = o.d[0] - a[0], wy = o.d[1] - a[1], wz = o.d[2] - a[2];
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const double det = nx * wx + ny * wy + nz * wz;
+  const double perm = (std::fabs(uy * vz) + std::fabs(uz * vy)) * std::fabs(wx) +
+                      (std::fabs(uz * vx) + std::fabs(ux * vz)) * std::fabs(wy) +
+                      (std::fabs(ux * vy) + std::fabs(uy * vx)) * std::fabs(wz);
+  const double grad = std::fabs(nx) + std::fabs(ny) + std::fabs(nz);
+  const double bound = 1e-14 * perm + 1.01 * grad * o.err;
+  if (std::isfinite(bound) && perm > 1e-250) {
+    if (det > bound) return Sign::Positive;
+    if (det < -bound) return Sign::Negative;
+  }
+  return orient3d_q(to_q(a), to_q(b), to_q(c), o.q);
+}
+
+Sign orient2d_rat(int drop, const Point& a, const Point& b, const RatPoint& o) {
+  const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+  const double ux = b[i] - a[i], uy = b[j] - a[j];
+  const double wx = o.d[i] - a[i], wy = o.d[j] - a[j];
+  const double det = ux * wy - uy * wx;
+  const double perm = std::fabs(ux * wy) + std::fabs(uy * wx);
+  const double bound = 1e-14 * perm + 1.01 * (std::fabs(ux) + std::fabs(uy)) * o.err;
+  if (std::isfinite(bound) && perm > 1e-250) {
+    if (det > bound) return Sign::Positive;
+    if (det < -bound) return Sign::Negative;
+  }
+  const mpq_class qux = qdiff(b[i], a[i]), quy = qdiff(b[j], a[j]);
+  const mpq_class qwx = o.q[i] - mpq_class(a[i]), qwy = o.q[j] - mpq_class(a[j]);
+  return sign_of(sgn(mpq_class(qux * qwy - quy * qwx)));
 }
 
 }  // namespace pdr::refine

@@ -55,4 +55,19 @@ QPoint to_q(const Point& p);
 // Same convention as orient3d: sign det[b-a, c-a, d-a].
 Sign orient3d_q(const QPoint& a, const QPoint& b, const QPoint& c, const QPoint& d);
 
+// A rational point with a floating-point shadow: |q[k] - d[k]| <= err for every k. The
+// predicates below are exact for the rational point; they decide in floating point when
+// the shadow's error and the rounding provably cannot change the sign, else in GMP.
+struct RatPoint {
+  QPoint q;
+  Point d{};
+  double err = 0;
+};
+RatPoint make_rat(const QPoint& q);
+RatPoint make_rat(const Point& p);  // err = 0
+// orient3d(a, b, c, o) for the rational o.
+Sign orient3d_rat(const Point& a, const Point& b, const Point& c, const RatPoint& o);
+// orient2d of the projections (dropping `drop`, no swap) of a, b and the rational o.
+Sign orient2d_rat(int drop, const Point& a, const Point& b, const RatPoint& o);
+
 }  // namespace pdr::refine

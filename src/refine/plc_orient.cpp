@@ -11,9 +11,10 @@
 //      segment, where the wedges between consecutive sides alternate in / out of Ω, so
 //      inward(next) = -inward(this) * dir(this) * dir(next);
 //   3. each connected component ("shell") is seeded by an exact ray from a rational
-//      point inside one triangle along the axis of its largest normal component, counting
-//      proper crossings with rational orient3d; a ray that touches an edge, a vertex or
-//      lies in a triangle's plane is discarded and another point is tried.
+//      point inside one of its triangles along the axis of that triangle's largest normal
+//      component, counting proper crossings (orient3d / orient2d of the rational point,
+//      plc_exact.hpp: a floating-point filter, then GMP); a ray that touches an edge or a
+//      vertex, or runs in a triangle's plane, is discarded and another point is tried.
 // Hole points are tested the same way with rays from the point itself (axis rays first,
 // then fixed pseudo-random directions), counting crossings per shell.
 #include <algorithm>
@@ -36,15 +37,33 @@ struct TriRef {
 
 enum class Hit : std::uint8_t { Miss, Cross, Degenerate };
 
-// Segment o -> f against the closed triangle abc. Preconditions: o lies in no triangle
-// but the skipped one; f lies beyond every bounding box. A ray inside the triangle's plane
-// is reported degenerate without looking further (another ray is then tried).
-Hit classify(const QPoint& o, const QPoint& f, const QPoint& a, const QPoint& b, const QPoint& c) {
-  const Sign so = orient3d_q(a, b, c, o), sf = orient3d_q(a, b, c, f);
+// The ray from o along direction dir * e_axis against the closed triangle abc.
+// Precondition: o lies in no triangle but the skipped one. The ray meets the triangle's
+// plane at o + t dir e_axis with t = -n.(o - a) / (dir n_axis), n = (b-a)x(c-a); it
+// crosses the triangle iff t > 0 and the projection of o (dropping the axis) lies inside
+// the projected triangle, whose orientation is sign(n_axis). Touching an edge or a
+// vertex, or running inside the triangle's plane, is degenerate.
+Hit classify_axis(const RatPoint& o, int axis, int dir, const Point& a, const Point& b,
+                  const Point& c) {
+  const Sign nk = orient2d_dropping(axis, a, b, c);
+  const Sign so = orient3d_rat(a, b, c, o);
+  if (nk == Sign::Zero) return so == Sign::Zero ? Hit::Degenerate : Hit::Miss;
+  if (so == Sign::Zero) return Hit::Miss;  // o in the plane but outside the triangle
+  if (to_int(so) != -dir * to_int(nk)) return Hit::Miss;  // the plane is behind o
+  const Sign e1 = orient2d_rat(axis, a, b, o) * nk, e2 = orient2d_rat(axis, b, c, o) * nk,
+             e3 = orient2d_rat(axis, c, a, o) * nk;
+  if (e1 == Sign::Negative || e2 == Sign::Negative || e3 == Sign::Negative) return Hit::Miss;
+  if (e1 == Sign::Zero || e2 == Sign::Zero || e3 == Sign::Zero) return Hit::Degenerate;
+  return Hit::Cross;
+}
+
+// The segment o -> f (f beyond every bounding box) against the closed triangle abc, all
+// input doubles. Precondition: o lies in no triangle.
+Hit classify_segment(const Point& o, const Point& f, const Point& a, const Point& b, const Point& c) {
+  const Sign so = orient3d(a, b, c, o), sf = orient3d(a, b, c, f);
   if (so == Sign::Zero && sf == Sign::Zero) return Hit::Degenerate;
-  if (so == sf) return Hit::Miss;
-  if (so == Sign::Zero || sf == Sign::Zero) return Hit::Miss;  // touches the plane outside
-  const Sign s1 = orient3d_q(o, f, a, b), s2 = orient3d_q(o, f, b, c), s3 = orient3d_q(o, f, c, a);
+  if (so == sf || so == Sign::Zero || sf == Sign::Zero) return Hit::Miss;
+  const Sign s1 = orient3d(o, f, a, b), s2 = orient3d(o, f, b, c), s3 = orient3d(o, f, c, a);
   const bool neg = s1 == Sign::Negative || s2 == Sign::Negative || s3 == Sign::Negative;
   const bool pos = s1 == Sign::Positive || s2 == Sign::Positive || s3 == Sign::Positive;
   if (neg && pos) return Hit::Miss;
@@ -70,53 +89,49 @@ class RayCaster {
   const Box& bounds() const { return all_; }
   const Bvh& bvh() const { return bvh_; }
 
-  // Crossings of the ray o -> far per shell, skipping triangle `skip`; false if degenerate.
-  // Axis rays (axis >= 0) use the hierarchy; others test every triangle.
-  bool cast(const QPoint& o, const QPoint& far, int axis, int direction, std::int64_t skip,
-            std::vector<int>& crossings) const {
+  // Crossings per shell of the ray from o along dir * e_axis, skipping triangle `skip`
+  // (numbered as in tris()); false if the ray is degenerate. Boxes are filtered with the
+  // floating-point shadow of o widened by its error (a superset of the exact test).
+  bool cast_axis(const RatPoint& o, int axis, int dir, std::int64_t skip,
+                 std::vector<int>& crossings) const {
     crossings.assign(dom_.shells, 0);
     bool ok = true;
-    auto test = [&](std::uint32_t i) {
-      if (!ok || static_cast<std::int64_t>(i) == skip) return;
-      const FacetTri& t = tri(tris_[i]);
-      const Point &a = dom_.plc.points[t.v[0]], &b = dom_.plc.points[t.v[1]],
-                  &c = dom_.plc.points[t.v[2]];
-      const Hit h = classify(o, far, to_q(a), to_q(b), to_q(c));
-      if (h == Hit::Degenerate) {
-        ok = false;
-        return;
+    auto keep = [&](const Box& b) {
+      for (int j = 0; j < 3; ++j) {
+        if (j == axis) continue;
+        if (o.d[j] + o.err < b.lo[j] || o.d[j] - o.err > b.hi[j]) return false;
       }
-      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
+      return dir > 0 ? o.d[axis] - o.err <= b.hi[axis] : o.d[axis] + o.err >= b.lo[axis];
     };
-    if (axis < 0) {
-      for (std::uint32_t i = 0; i < tris_.size(); ++i) test(i);
-      return ok;
-    }
-    bvh_.for_each_kept(
-        [&](const Box& b) {
-          for (int j = 0; j < 3; ++j) {
-            if (j == axis) continue;
-            if (o[j] < b.lo[j] || o[j] > b.hi[j]) return false;
-          }
-          return direction > 0 ? o[axis] <= b.hi[axis] : o[axis] >= b.lo[axis];
-        },
-        test);
+    bvh_.for_each_kept(keep, [&](std::uint32_t i) {
+      if (!ok || static_cast<std::int64_t>(i) == skip) return;
+      const Hit h = classify_axis(o, axis, dir, point(i, 0), point(i, 1), point(i, 2));
+      if (h == Hit::Degenerate) ok = false;
+      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
+    });
     return ok;
   }
 
+  // Crossings per shell of the segment o -> f (f beyond every box); every triangle is
+  // tested (used only for the rare hole points whose axis rays are all degenerate).
+  bool cast_segment(const Point& o, const Point& f, std::vector<int>& crossings) const {
+    crossings.assign(dom_.shells, 0);
+    for (std::uint32_t i = 0; i < tris_.size(); ++i) {
+      const Hit h = classify_segment(o, f, point(i, 0), point(i, 1), point(i, 2));
+      if (h == Hit::Degenerate) return false;
+      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
+    }
+    return true;
+  }
+
  private:
+  const Point& point(std::uint32_t i, int k) const { return dom_.plc.points[tri(tris_[i]).v[k]]; }
+
   const PlcDomain& dom_;
   std::vector<TriRef> tris_;
   Bvh bvh_;
   Box all_;
 };
-
-QPoint far_point(const QPoint& o, const Box& all, int axis, int direction) {
-  QPoint f = o;
-  const double extent = (all.hi[0] - all.lo[0]) + (all.hi[1] - all.lo[1]) + (all.hi[2] - all.lo[2]) + 1;
-  f[axis] = mpq_class(direction > 0 ? all.hi[axis] + extent : all.lo[axis] - extent);
-  return f;
-}
 
 void sort_sides(const std::vector<Point>& pts, DomainSegment& s) {
   if (s.sides.size() < 2) return;
@@ -210,12 +225,12 @@ void orient_boundary(PlcDomain& dom) {
       const Sign nk = orient2d_dropping(axis, a, b, cc);
       const mpq_class w1(3 + 2 * attempt), w2(5 + 3 * attempt), w3(7 + 5 * attempt);
       const mpq_class sum = w1 + w2 + w3;
-      QPoint o;
+      QPoint q;
       for (int k = 0; k < 3; ++k)
-        o[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
+        q[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
       std::vector<int> crossings;
-      const auto skip = static_cast<std::int64_t>(g);  // RayCaster numbers triangles as g
-      if (!rays.cast(o, far_point(o, rays.bounds(), axis, +1), axis, +1, skip, crossings)) continue;
+      // RayCaster numbers triangles as g.
+      if (!rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g), crossings)) continue;
       int total = 0;
       for (int x : crossings) total += x;
       // The ray leaves along +axis, i.e. to the side of the normal iff n_axis > 0; that
@@ -268,26 +283,26 @@ void check_volume_holes(const PlcDomain& dom) {
              "volume hole off facets: " + which + " lies on " +
                  facet_name(plc, rays.tris()[k].facet) + "; move it into the void it marks");
     });
-    const QPoint o = to_q(h);
     std::vector<int> crossings;
     bool done = false;
-    for (int attempt = 0; attempt < 6 && !done; ++attempt) {
-      const int axis = attempt / 2, direction = attempt % 2 ? -1 : 1;
-      done = rays.cast(o, far_point(o, rays.bounds(), axis, direction), axis, direction, -1, crossings);
-    }
+    for (int attempt = 0; attempt < 6 && !done; ++attempt)
+      done = rays.cast_axis(make_rat(h), attempt / 2, attempt % 2 ? -1 : 1, -1, crossings);
+    // Rays in fixed pseudo-random directions (reproducible), long enough to leave every box.
+    const Box& all = rays.bounds();
+    double reach = 1;
+    for (int k = 0; k < 3; ++k)
+      reach += (all.hi[k] - all.lo[k]) + std::fabs(h[k] - 0.5 * (all.lo[k] + all.hi[k]));
     std::uint64_t state = 0x9E3779B97F4A7C15ull;
     for (int attempt = 0; attempt < 64 && !done; ++attempt) {
       Point dir;
-      for (double& x : dir) {  // fixed-seed LCG: reproducible directions
+      for (double& x : dir) {
         state = state * 6364136223846793005ull + 1442695040888963407ull;
         x = static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
       }
-      const Box& all = rays.bounds();
-      const double extent = (all.hi[0] - all.lo[0]) + (all.hi[1] - all.lo[1]) + (all.hi[2] - all.lo[2]) + 1;
-      double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+      const double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
       Point far;
-      for (int k = 0; k < 3; ++k) far[k] = h[k] + 4 * extent * dir[k] / len;
-      done = rays.cast(o, to_q(far), -1, 0, -1, crossings);
+      for (int k = 0; k < 3; ++k) far[k] = h[k] + 2 * reach * dir[k] / len;
+      done = rays.cast_segment(h, far, crossings);
     }
     if (!done) throw std::logic_error("plc_orient: no non-degenerate ray from a hole point");
     int total = 0, enclosing = 0;
