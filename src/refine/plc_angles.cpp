@@ -178,15 +178,29 @@ class Checker {
 
   void facet_facet_vertex_pairs(std::uint32_t v) {
     const auto& fs = dom_.vertex_facets[v];
+    if (fs.size() < 2) return;
+    // Each facet's corners at v and its segments at v (few, so pair tests stay cheap even
+    // where many facets meet).
+    std::vector<std::vector<Corner>> corners(fs.size());
+    std::vector<std::vector<std::uint32_t>> segs(fs.size());
+    for (std::size_t i = 0; i < fs.size(); ++i) {
+      corners[i] = corners_at(fs[i], v);
+      const auto& own = dom_.facets[fs[i]].segments;
+      for (const Corner& c : corners[i])
+        for (std::uint32_t u : {c.x, c.y})
+          if (const auto s = dom_.find_segment(v, u); s && std::binary_search(own.begin(), own.end(), *s))
+            segs[i].push_back(*s);
+      std::sort(segs[i].begin(), segs[i].end());
+      segs[i].erase(std::unique(segs[i].begin(), segs[i].end()), segs[i].end());
+    }
     for (std::size_t i = 0; i < fs.size(); ++i)
       for (std::size_t j = i + 1; j < fs.size(); ++j) {
-        const auto &si = dom_.facets[fs[i]].segments, &sj = dom_.facets[fs[j]].segments;
         bool share = false;
-        for (std::uint32_t s : dom_.vertex_segments[v])
-          share = share || (std::binary_search(si.begin(), si.end(), s) &&
-                            std::binary_search(sj.begin(), sj.end(), s));
+        for (std::uint32_t s : segs[i])
+          share = share || std::binary_search(segs[j].begin(), segs[j].end(), s);
         if (share) continue;
-        const std::vector<Corner> ci = corners_at(fs[i], v), cj = corners_at(fs[j], v);
+        const std::vector<Corner>&ci = corners[i];
+        const std::vector<Corner>&cj = corners[j];
         bool violation = false;
         double deg = 180;
         for (const Corner& a : ci)

@@ -71,12 +71,8 @@ bool conflict(const Item& a, const Item& b, const std::vector<Point>& pts) {
   using K = Item::Kind;
   if (a.kind == K::Triangle && b.kind == K::Triangle)
     return a.facet != b.facet && triangles_conflict(a.v, b.v, pts);
-  if (a.kind == K::Segment && b.kind == K::Triangle) {
-    // A standalone segment between two corners of a triangle runs along an edge of a face
-    // that is not one of the face's segments: it lies in the face without being listed.
-    if (has(b, a.v[0]) && has(b, a.v[1])) return true;
+  if (a.kind == K::Segment && b.kind == K::Triangle)  // along a triangle edge: see above
     return segment_triangle_conflict({a.v[0], a.v[1]}, b.v, pts);
-  }
   if (a.kind == K::Segment && b.kind == K::Segment)
     return segments_conflict({a.v[0], a.v[1]}, {b.v[0], b.v[1]}, pts);
   if (a.kind == K::Vertex && b.kind == K::Triangle)
@@ -91,6 +87,22 @@ bool conflict(const Item& a, const Item& b, const std::vector<Point>& pts) {
 
 void check_crossings(const PlcDomain& dom) {
   const std::vector<Point>& pts = dom.plc.points;
+  // A segment along an edge of a face's triangulation that is not one of the face's
+  // segments lies inside the face without being listed: the triangle tests below cannot
+  // see it (triangles sharing an edge meet only in that edge), so it is checked here.
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
+    for (const FacetTri& t : dom.facets[f].tris)
+      for (int i = 0; i < 3; ++i) {
+        if (t.on_segment[i]) continue;
+        const std::uint32_t p = t.v[(i + 1) % 3], q = t.v[(i + 2) % 3];
+        if (!dom.find_segment(p, q)) continue;
+        fail(dom.plc, dom.plc.facets[f].line,
+             "non-crossing components: the segment from " + vertex_name(dom.plc, p) + " to " +
+                 vertex_name(dom.plc, q) + " of another facet lies inside " +
+                 facet_name(dom.plc, f) +
+                 " but is not one of its edges; add it to this facet as a 2-vertex polygon, or "
+                 "fix the geometry so that the facets meet only along common segments");
+      }
   std::vector<Item> items;
   for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
     for (const FacetTri& t : dom.facets[f].tris) items.push_back({Item::Triangle, f, t.v});

@@ -174,6 +174,30 @@ TEST(PlcValidate, AcceptsVertexInsideAnotherFacetsEdge) {
   for (const DomainSegment& s : dom.segments) EXPECT_EQ(s.sides.size(), 2u);
 }
 
+TEST(PlcValidate, AcceptsCollinearOverlappingEdges) {
+  // The box [0,3]x[0,1]x[0,1] with its top split at x = 2 and its front wall (y = 0) split
+  // at x = 1: the top-left facet's front edge (x in [0,2]) and the front-right wall's top
+  // edge (x in [1,3]) overlap on [1,2]; splitting at vertices makes them share that piece.
+  Plc p = box({0, 0, 0}, {3, 1, 1});
+  p.points.push_back({2, 0, 1});  // 8
+  p.points.push_back({2, 1, 1});  // 9
+  p.points.push_back({1, 0, 0});  // 10
+  p.points.push_back({1, 0, 1});  // 11
+  p.facets[1].polygons = {{4, 8, 9, 7}};
+  p.facets[2].polygons = {{0, 10, 11, 4}};
+  PlcFacet top_right, front_right;
+  top_right.polygons = {{8, 5, 6, 9}};
+  front_right.polygons = {{10, 1, 5, 11}};
+  p.facets.push_back(top_right);
+  p.facets.push_back(front_right);
+  relabel(p);
+  const PlcDomain dom = build_domain(p);
+  for (const DomainSegment& s : dom.segments) EXPECT_EQ(s.sides.size(), 2u);
+  EXPECT_TRUE(dom.find_segment(11, 8).has_value());  // the shared piece [1,2]
+  EXPECT_FALSE(dom.find_segment(4, 8).has_value());  // split at 11
+  EXPECT_FALSE(dom.find_segment(11, 5).has_value());  // split at 8
+}
+
 TEST(PlcValidate, AcceptsFacetHolesAndTunnels) {
   // A frame: the box [0,3]x[0,3]x[0,1] with a square tunnel [1,2]^2 along z.
   std::vector<Point> pts{{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {0, 3, 0}, {0, 0, 1}, {3, 0, 1},
@@ -254,6 +278,34 @@ TEST(PlcValidate, StandaloneSegmentsAndIsolatedVertices) {
   Plc pierce = p;
   pierce.points[9] = {3, 3, 5};  // the segment leaves through the top
   EXPECT_NE(error_of(pierce).find("non-crossing components"), std::string::npos);
+}
+
+TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {
+  // A standalone segment along the diagonal of the top of a box: it lies in the top facet
+  // whether or not the facet's triangulation happens to use that diagonal.
+  for (int diagonal = 0; diagonal < 2; ++diagonal) {
+    Plc p = box({0, 0, 0}, {2, 2, 2});
+    PlcFacet seg;
+    seg.polygons = {{diagonal ? 4u : 5u, diagonal ? 6u : 7u}};
+    p.facets.push_back(seg);
+    relabel(p);
+    EXPECT_NE(error_of(p).find("non-crossing components"), std::string::npos) << error_of(p);
+  }
+  // A fin through the top facet along that diagonal (listed as an edge of the fin only).
+  for (int diagonal = 0; diagonal < 2; ++diagonal) {
+    Plc p = box({0, 0, 0}, {2, 2, 2});
+    const std::uint32_t a = diagonal ? 4u : 5u, b = diagonal ? 6u : 7u;
+    const Point pa = p.points[a], pb = p.points[b];
+    p.points.push_back({pa[0], pa[1], 1});  // 8
+    p.points.push_back({pb[0], pb[1], 1});  // 9
+    p.points.push_back({pb[0], pb[1], 3});  // 10
+    p.points.push_back({pa[0], pa[1], 3});  // 11
+    PlcFacet fin;
+    fin.polygons = {{8, 9, b, 10, 11, a}, {a, b}};
+    p.facets.push_back(fin);
+    relabel(p);
+    EXPECT_NE(error_of(p).find("non-crossing components"), std::string::npos) << error_of(p);
+  }
 }
 
 TEST(PlcValidate, DataFilesAreValid) {
