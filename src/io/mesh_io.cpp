@@ -6,6 +6,7 @@
 #include "io/file_bytes.hpp"
 #include "io/gmsh.hpp"
 #include "io/medit.hpp"
+#include "io/mesh_assembly.hpp"
 #include "io/tetgen.hpp"
 
 namespace pdr::io {
@@ -58,6 +59,16 @@ std::vector<std::string> output_paths(const std::string& prefix, MeshFormat form
 void write_mesh(const MeshData& mesh, const std::string& prefix,
                 std::span<const MeshFormat> formats, const std::vector<CellField>& cell_fields,
                 const std::vector<PointField>& point_fields) {
+  // Refuse an inconsistent mesh or field before any format is written.
+  check_writable(mesh, prefix);
+  for (const CellField& f : cell_fields)
+    if (f.values.size() != mesh.tets.size())
+      throw std::invalid_argument("cannot write '" + prefix + "': cell field '" + f.name +
+                                  "' does not have one value per tet");
+  for (const PointField& f : point_fields)
+    if (f.values.size() != mesh.points.size())
+      throw std::invalid_argument("cannot write '" + prefix + "': point field '" + f.name +
+                                  "' does not have one value per point");
   for (MeshFormat f : formats) {
     switch (f) {
       case MeshFormat::TetGen: write_tetgen_mesh(mesh, prefix); break;

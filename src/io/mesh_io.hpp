@@ -42,8 +42,9 @@ MeshFormat parse_mesh_format(std::string_view name);
 // PREFIX.msh, PREFIX.mesh.
 std::vector<std::string> output_paths(const std::string& prefix, MeshFormat format);
 
-// Writes `mesh` in each of `formats` under `prefix`. Cell and point fields go to the .vtu
-// output only.
+// Writes `mesh` in each of `formats` under `prefix`. Cell fields (one value per tet) and
+// point fields go to the .vtu output only. The mesh and the fields are checked before any
+// file is written (std::invalid_argument).
 void write_mesh(const MeshData& mesh, const std::string& prefix,
                 std::span<const MeshFormat> formats,
                 const std::vector<CellField>& cell_fields = {},

@@ -109,6 +109,8 @@ std::string_view array_payload(const VtuContext& c, const DataArray& a, std::siz
   if (nblocks > r.available() / hs)
     r.fail("has a compression header of " + std::to_string(nblocks) + " blocks, more than the "
            "file holds; the data is corrupt");
+  // (nblocks - 1) * block must not wrap around: each block then fits in `bytes`.
+  if (nblocks > 1 && (block == 0 || nblocks - 1 > bytes / block)) mismatch(nblocks * block);
   const std::uint64_t total =
       nblocks == 0 ? 0 : (nblocks - 1) * block + (last == 0 ? block : last);
   if (last > block || total != bytes) mismatch(total);
