@@ -10,6 +10,29 @@
 #include "io/error.hpp"
 
 namespace pdr::app {
+namespace {
+
+// Drops the duplicate points (never inserted, so in no tet) and renumbers the rest: the
+// output lists each vertex once, as a mesh must (validity.duplicate_vertices).
+void drop_duplicates(MeshData& mesh, const std::vector<Duplicate>& duplicates) {
+  if (duplicates.empty()) return;
+  std::vector<std::uint8_t> drop(mesh.points.size(), 0);
+  for (const auto& d : duplicates) drop[d.id] = 1;
+  std::vector<std::uint32_t> renumber(mesh.points.size());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+    renumber[i] = static_cast<std::uint32_t>(kept);
+    if (!drop[i]) mesh.points[kept++] = mesh.points[i];
+  }
+  mesh.points.resize(kept);
+  if (!mesh.point_markers.empty()) mesh.point_markers.clear();
+  for (auto& t : mesh.tets)
+    for (auto& v : t) v = renumber[v];
+  for (auto& f : mesh.faces)
+    for (auto& v : f) v = renumber[v];
+}
+
+}  // namespace
 
 int triangulate_write_check(std::vector<Point> points, const std::string& source,
                             const std::string& prefix,
@@ -21,8 +44,10 @@ int triangulate_write_check(std::vector<Point> points, const std::string& source
   if (bulk.status != BulkStatus::Ok)
     throw InputError(source, 0, bulk.message + "; give points that span a volume");
   const double t_build = timer.lap("delaunay");
-  const MeshData mesh = to_mesh_data(dt);
+  MeshData mesh = to_mesh_data(dt);
+  drop_duplicates(mesh, bulk.duplicates);
   summary.set("points", n);
+  summary.set("vertices", mesh.points.size());
   summary.set("duplicates", bulk.duplicates.size());
   if (!bulk.duplicates.empty()) {
     std::vector<std::string> first;

@@ -1,0 +1,172 @@
+// End-to-end tests of `pdr delaunay` and `pdr check` (src/app): what a user sees. Each test
+// works in its own temporary directory, runs the real binary, and asserts the exit code
+// (README "Exit codes"), the files left behind and the messages.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int code = -1;
+  std::string out;  // stdout and stderr together
+};
+
+Outcome run(const std::string& args) {
+  Outcome r;
+  const std::string cmd = std::string(PDR_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+bool on_path(const std::string& tool) {
+  return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pdr-cli-" + std::string(::testing::UnitTest::GetInstance()
+                                         ->current_test_info()->name()) + "-" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  void write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+  }
+  // A .node file of n seeded random points in the unit cube plus the cube's corners.
+  void write_points(const std::string& name, int n) const {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::ostringstream s;
+    s.precision(17);
+    s << n + 8 << " 3 0 0\n";
+    int id = 1;
+    for (int c = 0; c < 8; ++c) s << id++ << ' ' << (c & 1) << ' ' << (c >> 1 & 1) << ' ' << (c >> 2) << '\n';
+    for (int i = 0; i < n; ++i) s << id++ << ' ' << u(rng) << ' ' << u(rng) << ' ' << u(rng) << '\n';
+    write(name, s.str());
+  }
+  fs::path dir_;
+};
+
+TEST_F(Cli, DelaunayWritesCheckedOutputThatCheckAccepts) {
+  write_points("pts.node", 2000);
+  const Outcome d = run("delaunay " + path("pts.node") + " -o " + path("out") +
+                    " --formats node,vtu,msh,mesh --json");
+  ASSERT_EQ(d.code, 0) << d.out;
+  const auto j = nlohmann::json::parse(d.out);
+  EXPECT_EQ(j["check"], "pass");
+  EXPECT_EQ(j["points"], 2008);
+  EXPECT_GT(j["tets"].get<int>(), 2008 * 5);
+  for (const char* ext : {".node", ".ele", ".face", ".vtu", ".msh", ".mesh"})
+    EXPECT_TRUE(fs::exists(path(std::string("out") + ext))) << ext;
+  for (const char* m : {"out", "out.msh", "out.mesh", "out.vtu"}) {
+    const Outcome c = run("check " + path(m));
+    EXPECT_EQ(c.code, 0) << m << "\n" << c.out;
+  }
+}
+
+TEST_F(Cli, CheckFindsAFlippedTetAndNamesTheCheck) {
+  write_points("pts.node", 300);
+  ASSERT_EQ(run("delaunay " + path("pts.node") + " -o " + path("m")).code, 0);
+  // Swap two vertices of the first tet of m.ele: it becomes negatively oriented.
+  std::ifstream in(path("m.ele"));
+  std::string header, line, rest;
+  std::getline(in, header);
+  std::getline(in, line);
+  std::stringstream all;
+  all << in.rdbuf();
+  std::istringstream t(line);
+  long id, a, b, c, d;
+  t >> id >> a >> b >> c >> d;
+  std::ostringstream out;
+  out << header << '\n' << id << ' ' << b << ' ' << a << ' ' << c << ' ' << d << '\n' << all.str();
+  write("m.ele", out.str());
+  const Outcome r = run("check " + path("m") + " --json");
+  EXPECT_EQ(r.code, 1) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  bool orientation_failed = false;
+  for (const auto& c : j["checks"])
+    if (c["id"] == "validity.orientation") orientation_failed = c["status"] == "fail";
+  EXPECT_TRUE(orientation_failed) << r.out;
+  EXPECT_NE(run("check " + path("m")).out.find("validity.orientation"), std::string::npos);
+}
+
+TEST_F(Cli, MalformedInputExits2WithFileAndLineAndWritesNothing) {
+  write("bad.node", "4 3 0 0\n1 0 0 0\n2 1 0 zero\n3 0 1 0\n4 0 0 1\n");
+  const Outcome r = run("delaunay " + path("bad.node") + " -o " + path("out"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("bad.node:3"), std::string::npos) << r.out;
+  for (const auto& e : fs::directory_iterator(dir_))
+    EXPECT_EQ(e.path().filename().string().rfind("out", 0), std::string::npos)
+        << "left behind: " << e.path();
+}
+
+TEST_F(Cli, CoplanarPointsAreBadInput) {
+  write("flat.node", "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n5 2 3 0\n");
+  const Outcome r = run("delaunay " + path("flat.node") + " -o " + path("out"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("flat.node"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(path("out.ele")));
+}
+
+TEST_F(Cli, DuplicatesAreReportedNotInserted) {
+  write("dup.node", "6 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 0 0\n6 1 1 1\n");
+  const Outcome r = run("delaunay " + path("dup.node") + " -o " + path("out") + " --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["duplicates"], 1);
+  EXPECT_EQ(j["check"], "pass");
+}
+
+TEST_F(Cli, MalformedMeshForCheckExits2) {
+  write("m.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
+  write("m.ele", "1 4 0\n1 1 2 3 9\n");
+  const Outcome r = run("check " + path("m"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("m.ele:2"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, UnknownFormatIsAUsageError) {
+  write_points("pts.node", 10);
+  const Outcome r = run("delaunay " + path("pts.node") + " -o " + path("out") + " --formats stl");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_FALSE(fs::exists(path("out.ele")));
+}
+
+TEST_F(Cli, TetgenMeshOfABoxIsValidAndConforms) {
+  if (!on_path("tetgen")) GTEST_SKIP() << "tetgen not installed";
+  fs::copy_file(fs::path(PDR_DATA_DIR) / "box.poly", path("box.poly"));
+  ASSERT_EQ(std::system(("cd " + dir_.string() + " && tetgen -pQ box.poly >/dev/null").c_str()), 0);
+  const Outcome r = run("check " + path("box.1") + " --domain " + path("box.poly") + " --json");
+  const auto j = nlohmann::json::parse(r.out);
+  for (const auto& c : j["checks"]) {
+    const std::string id = c["id"];
+    if (id.rfind("validity.", 0) == 0 || id.rfind("conformity.", 0) == 0) {
+      EXPECT_NE(c["status"], "fail") << id << "\n" << r.out;
+    }
+  }
+}
+
+}  // namespace
