@@ -14,10 +14,15 @@
 // Exact test. Two tets (convex, full-dimensional) have disjoint interiors iff some plane
 // weakly separates them, and one can be found among (Minkowski-difference facets): the
 // face planes of either tet, and the planes through an edge e of one tet spanned by e and
-// an edge e' of the other (e x e' != 0). Each candidate is decided with exact signs
+// an edge e' of the other (e x e' != 0). A plane separating two tets that share vertices
+// holds them all (they lie in both closed sets), so only candidates holding every shared
+// vertex are tried: for a shared edge, the four face planes through it (the tets' wedges
+// around it are separable by one of their sides); for a shared vertex, the six face planes
+// and nine edge pairs through it (the SAT candidates of the two tangent cones). Each candidate is decided with exact signs
 // (signs.hpp); "weakly" means both closed half-spaces, so touching tets are separated.
 // Candidate pairs: a uniform grid over the tets' bounding boxes (grid.hpp); a pair is
-// examined in the one cell holding the low corner of the boxes' intersection. Pairs sharing
+// examined in the one cell holding the low corner of the boxes' intersection. Boxes that
+// only touch have a separating axis-parallel plane for free. Pairs sharing
 // a face are left to validity.face_sharing; degenerate tets to validity.orientation.
 #include <algorithm>
 #include <array>
@@ -72,9 +77,22 @@ bool coplanar_overlap(const Tet4& s, int fs, const Tet4& t, const std::array<int
   return !separates(ia, pa, ib, pb) && !separates(ib, pb, ia, pa);
 }
 
+// The outward face planes of a positive tet.
+struct Planes {
+  std::array<signs::Plane, 4> face;
+  Planes() = default;
+  explicit Planes(const Tet4& s) {
+    for (int f = 0; f < 4; ++f)
+      face[f] = signs::Plane(*s.p[kFaceVertices[f][0]], *s.p[kFaceVertices[f][1]], *s.p[kFaceVertices[f][2]]);
+  }
+};
+
 // Face planes of s against the vertices of t.
-std::optional<Contact> by_faces(const Tet4& s, const Tet4& t) {
+std::optional<Contact> by_faces(const Tet4& s, const Planes& ps, const Tet4& t) {
   for (int f = 0; f < 4; ++f) {
+    // A plane separating tets with a common vertex passes through it: faces of s not
+    // holding every shared vertex cannot separate.
+    if (std::find(t.id.begin(), t.id.end(), s.id[f]) != t.id.end()) continue;
     const auto& fv = kFaceVertices[f];
     bool separated = true;
     std::array<int, 3> on{};
@@ -87,7 +105,7 @@ std::optional<Contact> by_faces(const Tet4& s, const Tet4& t) {
       else if (q == s.id[f])
         side = Sign::Negative;
       else
-        side = signs::orient3d(*s.p[fv[0]], *s.p[fv[1]], *s.p[fv[2]], *t.p[k]);
+        side = ps.face[f].orient(*t.p[k]);
       if (side == Sign::Negative) separated = false;
       if (side == Sign::Zero && n_on < 3) on[n_on++] = k;
     }
@@ -105,14 +123,26 @@ std::optional<Contact> by_faces(const Tet4& s, const Tet4& t) {
 }
 
 bool by_edges(const Tet4& s, const Tet4& t) {
+  auto holds_shared = [&](const Tet4& x, const std::array<int, 2>& e, const Tet4& y) {
+    for (int k = 0; k < 4; ++k)
+      if (k != e[0] && k != e[1] && std::find(y.id.begin(), y.id.end(), x.id[k]) != y.id.end())
+        return false;
+    return true;
+  };
   for (const auto& es : kEdges)
     for (const auto& et : kEdges) {
+      // As in by_faces: the plane must hold every shared vertex, so both edges must.
+      if (!holds_shared(s, es, t) || !holds_shared(t, et, s)) continue;
       const Point& e0 = *s.p[es[0]];
       const Point& e1 = *s.p[es[1]];
       const Point& g0 = *t.p[et[0]];
       const Point& g1 = *t.p[et[1]];
+      const std::uint32_t s0 = s.id[es[0]], s1 = s.id[es[1]], t0 = t.id[et[0]], t1 = t.id[et[1]];
+      // det[e1 - e0, g1 - g0, x - e0] vanishes identically when x is e0 or e1, or when x is
+      // one end of e' and the other end is e0 or e1 (dependent columns).
       auto side = [&](std::uint32_t id, const Point& x) {
-        if (id == s.id[es[0]] || id == s.id[es[1]]) return 0;
+        if (id == s0 || id == s1) return 0;
+        if ((id == t1 && (t0 == s0 || t0 == s1)) || (id == t0 && (t1 == s0 || t1 == s1))) return 0;
         return to_int(signs::det3(e0, e1, g0, g1, e0, x));
       };
       int lo_s = 0, hi_s = 0, lo_t = 0, hi_t = 0;
@@ -133,9 +163,25 @@ bool by_edges(const Tet4& s, const Tet4& t) {
   return false;
 }
 
-Contact contact(const Tet4& s, const Tet4& t) {
-  if (auto c = by_faces(s, t)) return *c;
-  if (auto c = by_faces(t, s)) return *c;
+// Boxes touching on the plane x[axis] = c: the plane separates the tets; they can only
+// meet improperly through two coplanar faces lying in it.
+Contact touching(const Tet4& s, const Tet4& t, int axis, double c) {
+  int fs = -1, ns = 0, nt = 0;
+  std::array<int, 3> on{};
+  for (int k = 0; k < 4; ++k) {
+    if ((*s.p[k])[axis] == c)
+      ++ns;
+    else
+      fs = k;  // the face of s in the plane is the one opposite its off-plane vertex
+    if ((*t.p[k])[axis] == c && nt < 3) on[nt++] = k;
+  }
+  if (ns != 3 || nt != 3) return Contact::Separated;
+  return coplanar_overlap(s, fs, t, on) ? Contact::CoplanarOverlap : Contact::Separated;
+}
+
+Contact contact(const Tet4& s, const Planes& ps, const Tet4& t) {
+  if (auto c = by_faces(s, ps, t)) return *c;
+  if (auto c = by_faces(t, Planes(t), s)) return *c;
   return by_edges(s, t) ? Contact::Separated : Contact::Overlap;
 }
 
@@ -166,38 +212,74 @@ CheckResult check_overlap(const Context& c) {
         b.hi[i] = std::max(b.hi[i], pts[tets[t][k]][i]);
       }
   }
-  const BoxGrid grid(boxes, static_cast<double>(tets.size()) / 2);
+  // Cells a few times larger than a typical tet box: few boxes straddle cells, and the
+  // sweep along x inside a cell prunes most non-overlapping boxes (measured best).
+  const BoxGrid grid(boxes, static_cast<double>(tets.size()) / 32);
+  const GridFrame& frame = grid.frame();
+  // Cell ranges of the boxes: a pair is examined only in the cell holding the low corner of
+  // the intersection of its two ranges.
+  std::vector<std::array<int, 6>> range(tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const auto lo = frame.cell_of(boxes[t].lo), hi = frame.cell_of(boxes[t].hi);
+    range[t] = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
+  }
   auto make = [&](std::uint32_t t) {
     Tet4 x{tets[t], {&pts[tets[t][0]], &pts[tets[t][1]], &pts[tets[t][2]], &pts[tets[t][3]]}};
     if (c.orientation[t] == Sign::Negative) std::swap(x.id[1], x.id[2]), std::swap(x.p[1], x.p[2]);
     return x;
   };
   const Options& o = c.options;
+  const auto dims = frame.dims();
   std::vector<Collector> parts(std::max(1u, o.threads), Collector(o.max_reported));
   parallel_blocks(grid.cells(), o.threads, 256, [&](unsigned w, std::size_t b, std::size_t e) {
     Collector& col = parts[w];
     const std::uint64_t before = signs::exact_evaluations();
+    // The cell's boxes, copied and sorted by low x: a sweep stops at the first box that
+    // starts beyond the current one.
+    std::vector<std::pair<Box, std::uint32_t>> local;
+    std::optional<Tet4> S;
+    Planes PS;
+    bool has_planes = false;
     for (std::size_t cell = b; cell < e; ++cell) {
-      const auto ids = grid.in_cell(cell);
-      for (std::size_t i = 0; i < ids.size(); ++i) {
-        const std::uint32_t s = ids[i];
-        if (c.orientation[s] == Sign::Zero) continue;
-        for (std::size_t j = i + 1; j < ids.size(); ++j) {
-          const std::uint32_t t = ids[j];
-          if (c.orientation[t] == Sign::Zero) continue;
-          const Box &bs = boxes[s], &bt = boxes[t];
-          Point corner;
-          bool meet = true;
-          for (int k = 0; k < 3; ++k) {
-            meet = meet && bs.lo[k] <= bt.hi[k] && bt.lo[k] <= bs.hi[k];
-            corner[k] = std::max(bs.lo[k], bt.lo[k]);
-          }
-          if (!meet) continue;
-          const auto cc = grid.frame().cell_of(corner);
-          if (grid.frame().index(cc[0], cc[1], cc[2]) != cell) continue;
+      const int ci = static_cast<int>(cell % dims[0]), cj = static_cast<int>(cell / dims[0] % dims[1]),
+                ck = static_cast<int>(cell / dims[0] / dims[1]);
+      local.clear();
+      for (std::uint32_t t : grid.in_cell(cell))
+        if (c.orientation[t] != Sign::Zero) local.emplace_back(boxes[t], t);
+      std::sort(local.begin(), local.end(), [](const auto& x, const auto& y) {
+        return x.first.lo[0] < y.first.lo[0] || (x.first.lo[0] == y.first.lo[0] && x.second < y.second);
+      });
+      for (std::size_t i = 0; i < local.size(); ++i) {
+        const Box& bs = local[i].first;
+        const std::uint32_t s = local[i].second;
+        const auto& rs = range[s];
+        S.reset();
+        has_planes = false;
+        for (std::size_t j = i + 1; j < local.size() && local[j].first.lo[0] <= bs.hi[0]; ++j) {
+          const Box& bt = local[j].first;
+          const std::uint32_t t = local[j].second;
+          if (bs.lo[1] > bt.hi[1] || bt.lo[1] > bs.hi[1] || bs.lo[2] > bt.hi[2] || bt.lo[2] > bs.hi[2])
+            continue;
+          const auto& rt = range[t];
+          if (std::max(rs[0], rt[0]) != ci || std::max(rs[1], rt[1]) != cj || std::max(rs[2], rt[2]) != ck)
+            continue;
           if (shared(tets[s], tets[t]) >= 3) continue;
           ++col.checked;
-          const Contact k = contact(make(s), make(t));
+          int axis = -1;
+          double plane = 0;
+          for (int a = 0; a < 3 && axis < 0; ++a) {
+            if (bs.hi[a] == bt.lo[a]) axis = a, plane = bs.hi[a];
+            if (bt.hi[a] == bs.lo[a]) axis = a, plane = bt.hi[a];
+          }
+          if (!S) S = make(s);
+          const Tet4 T = make(t);
+          Contact k;
+          if (axis >= 0) {
+            k = touching(*S, T, axis, plane);
+          } else {
+            if (!has_planes) PS = Planes(*S), has_planes = true;
+            k = contact(*S, PS, T);
+          }
           if (k == Contact::Separated) continue;
           const std::uint32_t lo = std::min(s, t), hi = std::max(s, t);
           const std::uint64_t key = (std::uint64_t{lo} << 32) | hi;

@@ -4,6 +4,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <initializer_list>
 
@@ -52,25 +53,39 @@ std::optional<Sign> det3_filter(const Vec& u, const Vec& v, const Vec& w) {
 }
 
 // Common power-of-two scaling: x_i = X_i * 2^e with integers |X_i| < 2^bits, if possible.
+// Reads the IEEE-754 fields directly: a finite nonzero double is m * 2^q with an integer
+// m < 2^53 (m = fraction | 2^52 and q = exponent - 1075, or m = fraction and q = -1074 for
+// subnormals).
 template <std::size_t N>
 bool to_ints(const std::array<double, N>& x, int bits, std::array<std::int64_t, N>& out) {
+  std::array<std::uint64_t, N> mant{};
+  std::array<int, N> q{};
   int low = 0, high = 0;
   bool any = false;
-  for (double v : x) {
-    if (v == 0) continue;
-    if (!std::isfinite(v)) return false;
-    int ex = 0;
-    const double m = std::frexp(v, &ex);  // |m| in [0.5, 1), v = m 2^ex
-    auto mant = static_cast<std::int64_t>(std::ldexp(std::fabs(m), 53));
-    const int tz = __builtin_ctzll(static_cast<unsigned long long>(mant));
-    const int lo = ex - 53 + tz;  // v = odd * 2^lo
+  for (std::size_t i = 0; i < N; ++i) {
+    const auto u = std::bit_cast<std::uint64_t>(x[i]);
+    const int e = static_cast<int>((u >> 52) & 0x7ff);
+    const std::uint64_t f = u & ((std::uint64_t{1} << 52) - 1);
+    if (e == 0x7ff) return false;  // inf, NaN
+    if (e == 0 && f == 0) continue;  // +-0
+    mant[i] = e == 0 ? f : (f | (std::uint64_t{1} << 52));
+    q[i] = e == 0 ? -1074 : e - 1075;
+    const int lo = q[i] + __builtin_ctzll(mant[i]);
+    const int hi = q[i] + 64 - __builtin_clzll(mant[i]);  // |x| < 2^hi
     if (!any || lo < low) low = lo;
-    if (!any || ex > high) high = ex;
+    if (!any || hi > high) high = hi;
     any = true;
   }
   if (any && high - low > bits) return false;
-  for (std::size_t i = 0; i < N; ++i)
-    out[i] = static_cast<std::int64_t>(std::ldexp(x[i], -low));  // exact: an integer < 2^bits
+  for (std::size_t i = 0; i < N; ++i) {
+    if (mant[i] == 0) {
+      out[i] = 0;
+      continue;
+    }
+    const int shift = q[i] - low;  // >= -ctz(mant): a right shift drops zero bits only
+    const auto v = static_cast<std::int64_t>(shift >= 0 ? mant[i] << shift : mant[i] >> -shift);
+    out[i] = std::signbit(x[i]) ? -v : v;
+  }
   return true;
 }
 
@@ -131,6 +146,29 @@ Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
   if (auto s = orient3d_int(a, b, c, d)) return *s;
   ++g_exact;
   return exact::orient3d(a, b, c, d);
+}
+
+Plane::Plane(const Point& a, const Point& b, const Point& c) : a_(&a), b_(&b), c_(&c) {
+  const Vec u = diff(b, a), v = diff(c, a);
+  ok_ = true;
+  for (int i = 0; i < 3; ++i) ok_ = ok_ && in_range(u[i]) && in_range(v[i]);
+  const double p[6] = {u[1] * v[2], u[2] * v[1], u[2] * v[0], u[0] * v[2], u[0] * v[1], u[1] * v[0]};
+  for (int i = 0; i < 3; ++i) {
+    n_[i] = p[2 * i] - p[2 * i + 1];
+    abs_[i] = std::fabs(p[2 * i]) + std::fabs(p[2 * i + 1]);
+  }
+}
+
+Sign Plane::orient(const Point& q) const {
+  if (ok_) {
+    const Vec w = diff(q, *a_);
+    if (in_range(w[0]) && in_range(w[1]) && in_range(w[2])) {
+      const double det = w[0] * n_[0] + w[1] * n_[1] + w[2] * n_[2];
+      const double perm = std::fabs(w[0]) * abs_[0] + std::fabs(w[1]) * abs_[1] + std::fabs(w[2]) * abs_[2];
+      if (auto s = decide(det, kDet3Bound * perm + 0x1p-1000)) return *s;
+    }
+  }
+  return orient3d(*a_, *b_, *c_, q);
 }
 
 Sign det3(const Point& a0, const Point& a1, const Point& b0, const Point& b1, const Point& c0,
@@ -238,6 +276,12 @@ Sign orient2d(const Point& a, const Point& b, const Point& c, int drop) {
     const double l = acx * bcy, r = acy * bcx;
     if (auto s = decide(l - r, kOrient2Bound * (std::fabs(l) + std::fabs(r)) + 0x1p-1000))
       return *s;
+  }
+  std::array<std::int64_t, 6> X;
+  if (to_ints(std::array<double, 6>{a[i], a[j], b[i], b[j], c[i], c[j]}, 60, X)) {
+    const I128 ux = I128(X[2]) - X[0], uy = I128(X[3]) - X[1], vx = I128(X[4]) - X[0],
+               vy = I128(X[5]) - X[1];
+    return sign_i(ux * vy - uy * vx);  // |.| < 2 * 2^61 * 2^61
   }
   ++g_exact;
   const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pc[2] = {c[i], c[j]};

@@ -17,12 +17,13 @@
 // error (2^-1075, times at most the lifts, < 2^302) is covered by an added slack of 2^-1000
 // (orient3d, det3) and 2^-700 (insphere). Otherwise the filter says "unsure".
 // Stage 2, integers: if all coordinates involved are integer multiples of one power of two
-// 2^e with quotients below 2^40 (3x3) or 2^22 (lifted 4x4), the determinant is computed
-// exactly in __int128 (bounds: 3x3 < 2^126, 4x4 < 2^122). Catches the exact zeros of
+// 2^e with quotients below 2^40 (3x3), 2^22 (lifted 4x4) or 2^60 (2x2), the determinant
+// is computed exactly in __int128 (bounds: 3x3 < 2^126, 4x4 < 2^122, 2x2 < 2^123). Catches the exact zeros of
 // structured meshes (cospherical and coplanar vertices) without GMP.
 // Stage 3: GMP rationals.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -50,6 +51,21 @@ Sign equatorial(const Point& a, const Point& b, const Point& c, const Point& p);
 // orient2d of the projections dropping coordinate `drop` (0, 1, 2): the points
 // (p[(drop+1)%3], p[(drop+2)%3]).
 Sign orient2d(const Point& a, const Point& b, const Point& c, int drop);
+
+// orient3d(a, b, c, q) for many q against one plane: the 2x2 minors of (b-a, c-a) are
+// computed once; evaluating w . (u x v) with w = q - a is the same 3x3 expansion (along
+// another row), so the same bound applies.
+class Plane {
+ public:
+  Plane() = default;
+  Plane(const Point& a, const Point& b, const Point& c);
+  Sign orient(const Point& q) const;  // = orient3d(a, b, c, q), exactly
+
+ private:
+  const Point *a_ = nullptr, *b_ = nullptr, *c_ = nullptr;
+  std::array<double, 3> n_{}, abs_{};
+  bool ok_ = false;
+};
 
 // The stages alone, for tests (nullopt: this stage cannot decide).
 std::optional<Sign> orient3d_filter(const Point& a, const Point& b, const Point& c,
