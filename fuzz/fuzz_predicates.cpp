@@ -2,6 +2,8 @@
 // reference (geom/exact.hpp), SoS variants included. The input picks coordinates from a
 // small alphabet (integers, halves, tiny offsets, ulp neighbours) so that exactly and
 // nearly degenerate configurations are frequent. Property: tests/geom (same laws).
+// Coordinates stay in the range the adaptive predicates are documented for (predicates.hpp:
+// 0 or magnitude in [2^-130, 2^130]); pdr's readers reject input outside it.
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -15,6 +17,7 @@ namespace {
 double coordinate(std::uint8_t b) {
   static const double base[] = {0.0, 1.0, -1.0, 2.0, 3.0, 0.5, 1e-3, 7.0};
   const double x = base[b & 7] * ((b & 8) ? 1024.0 : 1.0);
+  if (x == 0) return (b >> 4) % 4 == 0 ? 0.0 : 0x1p-60 * (b >> 4);
   switch (b >> 4) {
     case 1: return std::nextafter(x, 1e300);
     case 2: return std::nextafter(x, -1e300);
@@ -23,9 +26,14 @@ double coordinate(std::uint8_t b) {
   }
 }
 
+const pdr::Point* g_points = nullptr;  // the current input, for the failure report
+
 void agree(pdr::Sign fast, pdr::Sign exact, const char* what) {
   if (fast != exact) {
-    std::fprintf(stderr, "fuzz_predicates: %s disagrees with the GMP reference\n", what);
+    std::fprintf(stderr, "fuzz_predicates: %s gives %d, the GMP reference %d, on\n", what,
+                 pdr::to_int(fast), pdr::to_int(exact));
+    for (int i = 0; i < 5; ++i)
+      std::fprintf(stderr, "  (%a, %a, %a)\n", g_points[i][0], g_points[i][1], g_points[i][2]);
     std::abort();
   }
 }
@@ -37,6 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   pdr::Point p[5];
   for (int i = 0; i < 5; ++i)
     for (int k = 0; k < 3; ++k) p[i][k] = coordinate(data[3 * i + k]);
+  g_points = p;
   namespace ex = pdr::exact;
   agree(pdr::orient2d(p[0].data(), p[1].data(), p[2].data()),
         ex::orient2d(p[0].data(), p[1].data(), p[2].data()), "orient2d");

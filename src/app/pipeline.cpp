@@ -7,6 +7,7 @@
 #include "check/check.hpp"
 #include "delaunay/bulk.hpp"
 #include "delaunay/export.hpp"
+#include "geom/input_range.hpp"
 #include "io/error.hpp"
 
 namespace pdr::app {
@@ -39,6 +40,12 @@ int triangulate_write_check(std::vector<Point> points, const std::string& source
                             const std::vector<io::MeshFormat>& formats, bool check,
                             unsigned threads, PhaseTimer& timer, Summary& summary) {
   const std::size_t n = points.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!in_input_range(points[i]))
+      throw InputError(source, 0,
+                       "point " + std::to_string(i) +
+                           " has a coordinate that is not 0 and not of magnitude in "
+                           "[2^-100, 2^100] (about 1e-30 .. 1e30); rescale the input");
   Delaunay dt(std::move(points));
   const BulkResult bulk = bulk_insert(dt);
   if (bulk.status != BulkStatus::Ok)

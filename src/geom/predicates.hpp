@@ -44,8 +44,9 @@
 // Input range: the adaptive predicates are exact when every coordinate is an integer
 // multiple of 2^(-E-52) of magnitude at most 2^E (e.g. 0, or any double with magnitude in
 // [2^-E, 2^E]), E = 450 (orient2d), 270 (orient3d), 190 (incircle, incircle3 and their
-// _sos), 130 (insphere, insphere_sos): about 1e+-135, 1e+-81, 1e+-57, 1e+-39. Beyond it,
-// underflow may spoil a sign (filter.hpp); exact.hpp has no range limit. No inf or NaN.
+// _sos), 130 (insphere, insphere_sos): about 1e+-135, 1e+-81, 1e+-57, 1e+-39. Beyond it
+// (when the filter is unsure) stage 2 hands the input to the GMP reference, exact.hpp,
+// which has no range limit (stage2_range.hpp): exact for all finite doubles. No inf/NaN.
 //
 // Speed: the filter is inline (filter.hpp, no allocation, proven bound valid even under
 // FMA contraction); stage 2 is out of line in pdr_geom (stage2.hpp, stack arrays only).

@@ -5,10 +5,13 @@
 // (at most 12 components). orient3d(a,b,c,d) = det[b-a, c-a, d-a]; translated by a when
 // exact (at most 24 components), else -det[p 1] expanded along the constant column,
 //   det3(b,c,d) - det3(a,c,d) + det3(a,b,d) - det3(a,b,c)     (at most 96 components).
-// Reference: Shewchuk 1997, §4 (method only). Invariant: exact within filter.hpp's range.
+// Reference: Shewchuk 1997, §4 (method only). Invariant: exact for all finite doubles
+// (outside filter.hpp's range the GMP reference decides, stage2_range.hpp).
 #include <cmath>
 
+#include "geom/exact.hpp"
 #include "geom/stage2.hpp"
+#include "geom/stage2_range.hpp"
 #include "geom/stage2_terms.hpp"
 
 namespace pdr::stage2 {
@@ -16,6 +19,7 @@ namespace pdr::stage2 {
 using namespace terms;
 
 Sign orient2d(const double* a, const double* b, const double* c) {
+  if (!in_range<450>({a, b, c}, 2)) return exact::orient2d(a, b, c);
   double u[2], v[2];
   if (exact_differences(b, a, 2, u) && exact_differences(c, a, 2, v)) return xy(u, v).sign();
   return orient2(a, b, c).sign();
@@ -41,6 +45,8 @@ int plane_axis(const Point& a, const Point& b, const Point& c) {
 }
 
 Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+  if (!in_range<270>({a.data(), b.data(), c.data(), d.data()}, 3))
+    return exact::orient3d(a, b, c, d);
   double u[3], v[3], w[3];
   if (exact_differences(b.data(), a.data(), 3, u) &&
       exact_differences(c.data(), a.data(), 3, v) &&

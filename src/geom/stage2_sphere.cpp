@@ -11,8 +11,11 @@
 // (the dropped coordinate of p - d is then a linear combination of the other two).
 // Worst-case sizes: insphere untranslated 5 x 1152 components (about 100 KB of stack);
 // compression (expansion::compress) keeps the actual lengths short.
-// Reference: Shewchuk 1997, §4.4 (method only). Invariant: exact within filter.hpp's range.
+// Reference: Shewchuk 1997, §4.4 (method only). Invariant: exact for all finite doubles
+// (outside filter.hpp's range the GMP reference decides, stage2_range.hpp).
+#include "geom/exact.hpp"
 #include "geom/stage2.hpp"
+#include "geom/stage2_range.hpp"
 #include "geom/stage2_terms.hpp"
 
 namespace pdr::stage2 {
@@ -20,6 +23,7 @@ namespace pdr::stage2 {
 using namespace terms;
 
 Sign incircle(const double* a, const double* b, const double* c, const double* d) {
+  if (!in_range<190>({a, b, c, d}, 2)) return exact::incircle(a, b, c, d);
   double ta[2], tb[2], tc[2];
   if (exact_differences(a, d, 2, ta) && exact_differences(b, d, 2, tb) &&
       exact_differences(c, d, 2, tc))
@@ -33,6 +37,8 @@ Sign incircle(const double* a, const double* b, const double* c, const double* d
 
 Sign insphere(const Point& pa, const Point& pb, const Point& pc, const Point& pd,
               const Point& pe) {
+  if (!in_range<130>({pa.data(), pb.data(), pc.data(), pd.data(), pe.data()}, 3))
+    return exact::insphere(pa, pb, pc, pd, pe);
   const double* p[5] = {pa.data(), pb.data(), pc.data(), pd.data(), pe.data()};
   double t[4][3];
   bool translated = true;
@@ -68,6 +74,8 @@ Sign insphere(const Point& pa, const Point& pb, const Point& pc, const Point& pd
 }
 
 Sign incircle3(const Point& pa, const Point& pb, const Point& pc, const Point& pd) {
+  if (!in_range<190>({pa.data(), pb.data(), pc.data(), pd.data()}, 3))
+    return exact::incircle3(pa, pb, pc, pd);
   const int k = plane_axis(pa, pb, pc);
   if (k < 0) return Sign::Zero;
   const Sign nk = orient2d_projected(k, pa, pb, pc);
