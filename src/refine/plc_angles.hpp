@@ -19,15 +19,22 @@
 //                    the cone, else the angle to the nearest boundary ray), 0..180°.
 //   FacetFacetVertex two facets sharing v but no segment at v: the smallest angle between
 //                    their cones (attained at a boundary ray of one of them), 0..180°.
-// A pair is admissible iff its angle is in [90°, 270°]. Each angle above is either
-// measured from one side (then the other side is 360° minus it) or is a minimum over
-// directions, so in every case "admissible" means "no two directions of the two components
-// make an angle below 90°", i.e. every dot product is <= 0:
+// A pair is admissible iff its angle is in [90°, 270°]. An angle measured from one side
+// (a sector or a dihedral, 0..360°) is in [90°, 270°] iff the unsigned angle between its
+// two bounding directions is at least 90°; an angle defined as a minimum over directions
+// (0..180°) is at least 90° iff no direction of one makes an acute angle with a direction
+// of the other. Both are dot-product signs:
 //   SegmentSegment   (a-v).(b-v) <= 0;
 //   FacetFacet       (u x (w1-p)).(u x (w2-p)) <= 0 (cosine of the dihedral, u = q - p);
 //   FacetSegment     (w-v).(g-v) <= 0 for every generator g of the cone (the far corners
 //                    at v of the facet's triangles: the cone is their nonnegative span);
 //   FacetFacetVertex (g-v).(h-v) <= 0 for all generators g, h of the two cones.
+// Why this matches the paper: Lemma 1 relies on "the angle bounds" so that a new vertex on
+// one component (a subsegment midpoint, a subfacet circumcenter) never encroaches upon a
+// subsegment or subfacet of a related component. The tetrahedralization covers both sides
+// of the boundary until exterior tetrahedra are removed (§2.1 step 3), so an acute angle on
+// either side of two related components breaks that argument: hence the symmetric range
+// [90°, 270°], reported as measured through the domain.
 // These signs are exact (plc_exact.hpp), so 90° and 270° are classified exactly; the
 // reported degrees are floating point (a report, not a decision). For a facet planar only
 // within tolerance, the cone is that of its triangles.

@@ -41,7 +41,7 @@ Bvh::Bvh(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
   if (boxes_.empty()) return;
   order_.resize(boxes_.size());
   std::iota(order_.begin(), order_.end(), 0u);
-  nodes_.reserve(2 * boxes_.size() / 2 + 2);
+  nodes_.reserve(2 * boxes_.size());
   nodes_.emplace_back();
   build(0, 0, static_cast<std::uint32_t>(order_.size()));
 }
