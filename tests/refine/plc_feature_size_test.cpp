@@ -9,6 +9,7 @@
 #include <cmath>
 #include <set>
 
+#include "geom/predicates.hpp"
 #include "refine/plc_distance.hpp"
 #include "refine/plc_fixtures.hpp"
 #include "refine/plc_validate.hpp"
@@ -66,6 +67,16 @@ RC_GTEST_PROP(PlcFeatureSize, BoxWithVoids, ()) {
   }
   relabel(plc);
   expect_fast_equals_brute(plc);
+  // Orientation: the outer walls face their box's centre, the voids' walls face away.
+  const PlcDomain dom = build_domain(plc);
+  RC_ASSERT(dom.shells == voids.size() + 1);
+  for (std::size_t f = 0; f < dom.facets.size(); ++f) {
+    const Point c = f < 6 ? Point{24, 24, 16} : plc.holes[f / 6 - 1];
+    const int expected = f < 6 ? 1 : -1;
+    for (const FacetTri& t : dom.facets[f].tris)
+      RC_ASSERT(to_int(orient3d(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], c)) *
+                    t.inward == expected);
+  }
 }
 
 RC_GTEST_PROP(PlcFeatureSize, SkylinePrisms, ()) {
@@ -115,6 +126,32 @@ RC_GTEST_PROP(PlcFeatureSize, StarPrisms, ()) {
   const Plc plc = prism(poly, 0, *rc::gen::inRange(1, 10) / 3.0);
   RC_PRE(error_of(plc).empty());  // a star whose edge passes through a vertex is not simple
   expect_fast_equals_brute(plc);
+}
+
+// A box with a rectangular tunnel along z: caps with facet holes, a genus-one shell.
+Plc frame(const Point& lo, const Point& hi, double x0, double x1, double y0, double y1) {
+  std::vector<Point> p{{lo[0], lo[1], lo[2]}, {hi[0], lo[1], lo[2]}, {hi[0], hi[1], lo[2]},
+                       {lo[0], hi[1], lo[2]}, {lo[0], lo[1], hi[2]}, {hi[0], lo[1], hi[2]},
+                       {hi[0], hi[1], hi[2]}, {lo[0], hi[1], hi[2]}, {x0, y0, lo[2]},
+                       {x1, y0, lo[2]},       {x1, y1, lo[2]},       {x0, y1, lo[2]},
+                       {x0, y0, hi[2]},       {x1, y0, hi[2]},       {x1, y1, hi[2]},
+                       {x0, y1, hi[2]}};
+  Plc plc = make_plc(p, {{{0, 1, 2, 3}, {8, 9, 10, 11}}, {{4, 5, 6, 7}, {12, 13, 14, 15}},
+                         {{0, 1, 5, 4}}, {{1, 2, 6, 5}}, {{2, 3, 7, 6}}, {{3, 0, 4, 7}},
+                         {{8, 9, 13, 12}}, {{9, 10, 14, 13}}, {{10, 11, 15, 14}},
+                         {{11, 8, 12, 15}}});
+  plc.facets[0].holes = {{(x0 + x1) / 2, (y0 + y1) / 2, lo[2]}};
+  plc.facets[1].holes = {{(x0 + x1) / 2, (y0 + y1) / 2, hi[2]}};
+  return plc;
+}
+
+RC_GTEST_PROP(PlcFeatureSize, Frames, ()) {
+  const int w = *rc::gen::inRange(3, 30), h = *rc::gen::inRange(3, 30);
+  const int x0 = *rc::gen::inRange(1, w - 1), x1 = *rc::gen::inRange(x0 + 1, w);
+  const int y0 = *rc::gen::inRange(1, h - 1), y1 = *rc::gen::inRange(y0 + 1, h);
+  const double s = 1.0 / 3;
+  expect_fast_equals_brute(frame({0, 0, 0}, {w * s, h * s, *rc::gen::inRange(1, 30) * s}, x0 * s,
+                                 x1 * s, y0 * s, y1 * s));
 }
 
 TEST(PlcFeatureSize, ManyBoxesAgreeWithTheReference) {
