@@ -28,12 +28,23 @@ bool collinear(const Point& a, const Point& b, const Point& c) {
 
 BulkResult bulk_insert(Delaunay& dt, const BulkOptions& options) {
   BulkResult result;
-  const auto pts = dt.points();
-  const std::size_t n = pts.size();
+  const std::size_t n = dt.num_points();
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  if (options.spatial_sort) order = brio_order(std::move(order), pts, options.seed,
-                                               options.min_round);
+  if (options.spatial_sort)
+    order = brio_order(std::move(order), dt.points(), options.seed, options.min_round);
+  if (options.renumber) {
+    std::vector<Point> sorted(n);
+    for (std::size_t i = 0; i < n; ++i) sorted[i] = dt.point(order[i]);
+    dt.set_points(std::move(sorted));
+    result.input_index = std::move(order);
+    order.resize(n);
+    std::iota(order.begin(), order.end(), 0u);
+  } else {
+    result.input_index.resize(n);
+    std::iota(result.input_index.begin(), result.input_index.end(), 0u);
+  }
+  const auto pts = dt.points();
 
   // The first tet: positions ia < ib < ic < id in `order`.
   const std::size_t none = n;
@@ -68,7 +79,8 @@ BulkResult bulk_insert(Delaunay& dt, const BulkOptions& options) {
   for (std::size_t i = 0; i < n; ++i) {
     if (i == ia || i == ib || i == ic || i == id) continue;
     const InsertResult r = dt.insert(order[i], hint);
-    if (r.outcome == Outcome::Duplicate) result.duplicates.push_back({order[i], r.vertex});
+    if (r.outcome == Outcome::Duplicate)
+      result.duplicates.push_back({result.input_index[order[i]], result.input_index[r.vertex]});
     hint = r.tet;
   }
   return result;

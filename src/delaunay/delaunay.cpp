@@ -60,7 +60,7 @@ TetId Delaunay::commit(const Cavity& c, VertexId v) {
   stats_.conflict_tets += c.conflict.size();
   stats_.boundary_faces += c.boundary.size();
   ++stats_.inserted;
-  last_ = committer_.commit(store_, c, v);
+  last_ = committer_.commit(store_, c, v, points_.size());
   return last_;
 }
 

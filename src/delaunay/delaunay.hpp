@@ -30,6 +30,13 @@
 
 namespace pdr {
 
+// Tuning knobs of the kernel (none changes the triangulation, only how it is computed).
+struct KernelOptions {
+  std::uint32_t walk_seed = 0x9E3779B9u;     // the walk's face-choice generator (nonzero)
+  std::uint32_t dense_pairing_limit = 128;  // insert.hpp: L x L table up to this many
+                                            // boundary vertices, hashing beyond
+};
+
 struct InsertResult {
   Outcome outcome = Outcome::Inserted;
   VertexId vertex = kNoVertex;  // Inserted: the new vertex; Duplicate: the existing one
@@ -39,7 +46,10 @@ struct InsertResult {
 class Delaunay {
  public:
   Delaunay() = default;
-  explicit Delaunay(std::vector<Point> points) : points_(std::move(points)) {}
+  explicit Delaunay(std::vector<Point> points, KernelOptions options = {})
+      : points_(std::move(points)), committer_(options.dense_pairing_limit) {
+    rng_.state = options.walk_seed != 0 ? options.walk_seed : 1;
+  }
 
   // ---- points ------------------------------------------------------------------------
   VertexId add_point(const Point& p) {
@@ -47,6 +57,8 @@ class Delaunay {
     return static_cast<VertexId>(points_.size() - 1);
   }
   std::span<const Point> points() const { return points_; }
+  // Replace the point set (e.g. reordered for locality). Precondition: empty().
+  void set_points(std::vector<Point> points) { points_ = std::move(points); }
   const Point& point(VertexId v) const { return points_[v]; }
   std::size_t num_points() const { return points_.size(); }
   void reserve(std::size_t points, std::size_t tets) {

@@ -39,4 +39,20 @@ MeshData to_mesh_data(const Delaunay& dt, std::span<const std::uint8_t> keep) {
   return export_region(dt, [keep](TetId t) { return keep[t] != 0; });
 }
 
+void restore_input_order(MeshData& m, std::span<const VertexId> input_index) {
+  assert(input_index.size() == m.points.size());
+  std::vector<Point> points(m.points.size());
+  for (std::size_t v = 0; v < points.size(); ++v) points[input_index[v]] = m.points[v];
+  m.points = std::move(points);
+  for (Tet& t : m.tets)
+    for (auto& v : t) v = input_index[v];
+  for (Tri& f : m.faces)
+    for (auto& v : f) v = input_index[v];
+  if (!m.point_markers.empty()) {
+    std::vector<int> markers(m.point_markers.size());
+    for (std::size_t v = 0; v < markers.size(); ++v) markers[input_index[v]] = m.point_markers[v];
+    m.point_markers = std::move(markers);
+  }
+}
+
 }  // namespace pdr

@@ -20,4 +20,8 @@ namespace pdr {
 MeshData to_mesh_data(const Delaunay& dt);
 MeshData to_mesh_data(const Delaunay& dt, std::span<const std::uint8_t> keep);
 
+// Renumber m's points so that vertex v becomes input_index[v] (BulkResult::input_index,
+// a permutation of 0..points-1); tets and faces are relabelled alike.
+void restore_input_order(MeshData& m, std::span<const VertexId> input_index);
+
 }  // namespace pdr

@@ -37,12 +37,18 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, i
 
 namespace {
 
-constexpr int kBits = 21;
+// Grid resolution: about 2^9 cells per point along the curve is plenty for locality, and
+// each bit costs a round of the index computation.
+int grid_bits(std::size_t n) {
+  int log2n = 0;
+  while ((std::size_t{1} << log2n) < n && log2n < 63) ++log2n;
+  return std::clamp(log2n / 3 + 3, 2, 21);
+}
 
-std::uint32_t cell(double x, double lo, double hi) {
+std::uint32_t cell(double x, double lo, double hi, int bits) {
   const double span = hi - lo;
   if (!(span > 0)) return 0;
-  const double max = static_cast<double>((std::uint32_t{1} << kBits) - 1);
+  const double max = static_cast<double>((std::uint32_t{1} << bits) - 1);
   double c = (x - lo) / span * max;
   c = std::clamp(c, 0.0, max);
   return static_cast<std::uint32_t>(c);
@@ -61,10 +67,11 @@ std::uint64_t next_random(std::uint64_t& s) {
 void hilbert_sort(std::span<std::uint32_t> ids, std::span<const Point> pts, const Point& lo,
                   const Point& hi) {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(ids.size());
+  const int bits = grid_bits(ids.size());
   for (std::size_t i = 0; i < ids.size(); ++i) {
     const Point& p = pts[ids[i]];
-    keyed[i] = {hilbert_index(cell(p[0], lo[0], hi[0]), cell(p[1], lo[1], hi[1]),
-                              cell(p[2], lo[2], hi[2]), kBits),
+    keyed[i] = {hilbert_index(cell(p[0], lo[0], hi[0], bits), cell(p[1], lo[1], hi[1], bits),
+                              cell(p[2], lo[2], hi[2], bits), bits),
                 ids[i]};
   }
   std::sort(keyed.begin(), keyed.end());

@@ -4,7 +4,7 @@
 // The points are shuffled by a seeded generator; the last half of the shuffled list is
 // the last round, the last half of the rest the round before it, and so on down to a first
 // round of at most `min_round` points. Each round is sorted by the Hilbert index of the
-// point in a 2^21 grid over the bounding box (Skilling's transpose algorithm, from J.
+// point in a 2^b grid over the bounding box (b from 2 to 21, growing with the round size) (Skilling's transpose algorithm, from J.
 // Skilling, "Programming the Hilbert curve", AIP Conf. Proc. 707, 2004). Consecutive points
 // are then close, so a walk from the last inserted tet is short, while the random rounds
 // keep the expected total work optimal.

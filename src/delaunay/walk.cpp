@@ -1,12 +1,20 @@
 // The remembering stochastic visibility walk (walk.hpp).
 #include "delaunay/walk.hpp"
 
+#include "delaunay/semistatic.hpp"
 #include "geom/predicates.hpp"
 #include "mesh/tables.hpp"
 
 namespace pdr {
 
 namespace {
+
+// orient3d(a,b,c,p) > 0, with the inlined semi-static filter first (semistatic.hpp).
+inline bool beyond(const Point& a, const Point& b, const Point& c, const Point& p) {
+  const Filtered quick = semistatic::orient3d(a.data(), b.data(), c.data(), p.data());
+  if (quick != Filtered::Unsure) return quick == Filtered::Positive;
+  return orient3d(a, b, c, p) == Sign::Positive;
+}
 
 bool same_point(const Point& a, const Point& b) {
   return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
@@ -21,7 +29,7 @@ Location locate(const TetStore& s, std::span<const Point> pts, const Point& p, T
   int entered = -1;  // face of t we came through: p is known not to lie beyond it
   if (s.is_ghost(t)) {
     const VertexId* v = s.vertices(t);
-    if (orient3d(pts[v[0]], pts[v[1]], pts[v[2]], p) == Sign::Positive) {
+    if (beyond(pts[v[0]], pts[v[1]], pts[v[2]], p)) {
       out.kind = Location::Kind::OutsideHull;
       out.tet = t;
       out.steps = 1;
@@ -40,7 +48,7 @@ Location locate(const TetStore& s, std::span<const Point> pts, const Point& p, T
       const int f = (first + k) & 3;
       if (f == entered) continue;
       const auto& fv = tables::kFaceVertex[f];
-      if (orient3d(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], p) == Sign::Positive) {
+      if (beyond(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], p)) {
         crossed = f;
         break;
       }

@@ -96,7 +96,7 @@ std::vector<std::string> TetStore::check_topology() const {
            std::to_string(live_));
   // The free list holds exactly the dead slots.
   std::size_t free_count = 0;
-  for (TetId t = free_head_; t != kNoTet && free_count <= n; t = adj_[4 * t]) {
+  for (TetId t = free_head_; t != kNoTet && free_count <= n; t = opposite(t, 0)) {
     if (t >= n || is_alive(t)) {
       report("free-list: holds live or out-of-range tet " + std::to_string(t));
       break;
