@@ -2,23 +2,47 @@
 //
 // Given a mesh as plain arrays (points, tets, optionally boundary faces) and optionally the
 // input domain (a Plc), check_mesh() decides, exactly, the invariants that the paper
-// (Nave, Chrisochoides, Chew 2002) guarantees of its output, and returns them as data:
+// (Nave, Chrisochoides, Chew 2002) guarantees of its output, and returns them as data.
+// One CheckResult per check, always all of them, in this order:
 //
-//   validity.*              the mesh is a tetrahedralization: indices, finite and distinct
-//                           coordinates, positive tets, faces shared by at most two tets on
-//                           opposite sides, a closed outward boundary, interiors disjoint
-//   delaunay.empty_sphere   no vertex strictly inside a tet's circumsphere (§1.1, §1.2)
-//   quality.ratio           radius-edge ratio < B (Theorem 1, property 2)
-//   quality.shortest_edge   every edge longer than h (Theorem 1, property 1)
-//   conformity.*            the segments and facets of the domain appear as unions of mesh
-//                           edges and faces, and the mesh fills the domain (§1.1, §2.1 (1))
-//   encroachment.*          no subsegment or subfacet is encroached (§1.1; Lemma 1, inv. 1)
+//   validity.indices          every vertex index < #points
+//   validity.coordinates      every coordinate finite (else all later checks are Skipped)
+//   validity.orientation      orient3d(t0,t1,t2,t3) > 0 for every tet (zero volume fails)
+//   validity.duplicate_vertices   no two vertices with equal coordinates
+//   validity.unreferenced_vertices   vertices in no tet: Warn only, never Fail
+//   validity.face_sharing     a face is in <= 2 tets, whose 4th vertices lie strictly on
+//                             opposite sides of it
+//   validity.boundary_closed  faces in one tet, oriented outward, use every edge equally
+//                             often in both directions
+//   validity.faces            MeshData.faces (if any) = the boundary faces, plus optionally
+//                             interior faces (internal facets); inward orientation: Warn
+//   validity.overlap          tets have disjoint interiors; coplanar faces of two tets
+//                             overlap only if they are the same face
+//   delaunay.empty_sphere     no vertex strictly inside any tet's circumsphere (all
+//                             vertices, not only neighbours); on-sphere counted, not failed
+//   quality.ratio             R^2 < B^2 lmin^2 per tet (Theorem 1 (2)); Skipped without B
+//   quality.shortest_edge     l^2 > h^2 per edge (Theorem 1 (1)); Skipped without h
+//   conformity.vertices       every input vertex is a mesh vertex (equal coordinates)
+//   conformity.segments       the mesh vertices on each segment, in order, are joined by
+//                             mesh edges (its subsegments)
+//   conformity.facets         the mesh faces in each facet cover it: projected areas sum
+//                             exactly to its projected area (its subfacets)
+//   conformity.volume         boundary faces lie in facets, hole points in no tet, region
+//                             points in some tet
+//   encroachment.subsegments  no vertex strictly inside a subsegment's diametral sphere
+//   encroachment.subfacets    no vertex strictly inside a subfacet's equatorial sphere
+//                             (paper §1.1; Lemma 1, invariant 1); on-sphere counted
+//
+// The conformity and encroachment checks are Skipped without a domain. The files named in
+// each result's invariant text (src/check/*.cpp) give the exact criteria and arguments.
 //
 // Every decision is exact (signs of polynomials in the input doubles, taken as rationals):
 // floating-point filters with proven error bounds run first, GMP rationals (geom/exact.hpp)
 // decide what they cannot. The only tolerance is Options::relative_tolerance, which only
 // classifies imprecise input vertices as lying on a facet plane or a segment line (see
-// check/domain.hpp). Nothing here prints.
+// check/domain.hpp); how many vertices needed it is reported ("tolerance_vertices").
+// Nothing here prints; nothing depends on the thread count (findings are the first ones by
+// element id).
 #pragma once
 
 #include <cstddef>
@@ -61,8 +85,13 @@ struct Options {
   bool check_overlap = true;          // validity.overlap (the costliest validity check)
 };
 
+// Pass: no violation. Warn: no failure, but something was flagged or not judged (reason
+// says what). Fail: violations (counted in `violations`). Skipped: not run (reason says why).
 enum class Status { Pass, Warn, Fail, Skipped };
 std::string_view to_string(Status s);
+
+// The ids of all checks, in report order.
+const std::vector<std::string_view>& check_ids();
 
 inline constexpr std::uint64_t kNoId = std::numeric_limits<std::uint64_t>::max();
 

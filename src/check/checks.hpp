@@ -32,8 +32,6 @@ struct Context {
   std::optional<DomainMap> domain_map;
 };
 
-// The ids of all checks, in report order.
-const std::vector<std::string_view>& check_ids();
 // A result with the id, its invariant text (table in check.cpp), status Skipped.
 CheckResult make_result(std::string_view id);
 // Sets Pass/Fail from the violation count (Fail if any).
