@@ -2,6 +2,8 @@
 // a summary (text, or one JSON object with --json) and returns an exit code (exit_codes.hpp).
 #pragma once
 
+#include <CLI/CLI.hpp>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +29,8 @@ struct CheckArgs {
   unsigned threads = 2;
   std::size_t max_reported = 20;
 };
+// Registers `pdr check` and its options on `app`, filling `args` when parsed.
+CLI::App* add_check_command(CLI::App& app, CheckArgs& args);
 int run_check(const CheckArgs& args);
 
 struct DefaultArgs {

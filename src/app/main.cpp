@@ -46,20 +46,7 @@ int dispatch(int argc, char** argv) {
   cdel->add_option("--threads", del.threads, "Checker threads")->check(CLI::Range(1, 256));
 
   CheckArgs chk;
-  auto* cchk = app.add_subcommand(
-      "check", "Exact invariant checker for a tetrahedral mesh (any mesher's)");
-  cchk->add_option("mesh", chk.mesh,
-                   "Mesh: PREFIX (PREFIX.node + PREFIX.ele) or a .ele/.node/.msh/.mesh/.vtu")
-      ->required();
-  cchk->add_option("--domain", chk.domain, "The input domain (.poly/.smesh)")
-      ->check(CLI::ExistingFile);
-  cchk->add_option("--ratio", chk.ratio, "Require radius-edge ratio < B")
-      ->check(CLI::PositiveNumber);
-  cchk->add_option("--h", chk.h, "Require every edge longer than H")
-      ->check(CLI::NonNegativeNumber);
-  cchk->add_flag("--json", chk.json, "Print the report as one JSON object");
-  cchk->add_option("--threads", chk.threads, "Worker threads")->check(CLI::Range(1, 256));
-  cchk->add_option("--max-reported", chk.max_reported, "Findings listed per check");
+  CLI::App* cchk = add_check_command(app, chk);
 
   try {
     app.parse(argc, argv);
