@@ -63,8 +63,10 @@ void check_incidences(const SurfaceMesh& m, SurfaceAudit& out) {
           out.add("surface.homes: unused " + who + " is in a subsegment or subfacet");
         break;
       case HomeKind::Segment:
-        if (h.id >= m.segments.size()) {
-          out.add("surface.homes: " + who + " has segment home " + std::to_string(h.id) + " out of range");
+        if (h.id >= m.segments.size() || segs[v].size() != 2 ||
+            m.subsegment(segs[v][0]).segment != h.id || m.subsegment(segs[v][1]).segment != h.id) {
+          out.add("surface.homes: " + who + " with segment home " + std::to_string(h.id) +
+                  " is not inside exactly one chain of that segment");
           break;
         }
         for (const std::uint32_t t : tris[v]) {
@@ -112,13 +114,14 @@ void check_chains(const SurfaceMesh& m, SurfaceAudit& out) {
 }
 
 // Orientation, adjacency, conformity, area and local Delaunay of facet f.
-void check_facet(const SurfaceMesh& m, std::uint32_t f, SurfaceAudit& out) {
+void check_facet(const SurfaceMesh& m, std::uint32_t f, const std::vector<std::uint32_t>& tris,
+                 SurfaceAudit& out) {
   const SurfaceFacet& F = m.facets[f];
   const FacetChart& ch = F.chart;
   const std::string fn = m.facet_name(f);
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
   mpq_class area2 = 0;
-  for (const std::uint32_t t : m.facet_subfacets(f)) {
+  for (const std::uint32_t t : tris) {
     const Subfacet& T = m.subfacet(t);
     const Point &a = m.point(T.v[0]), &b = m.point(T.v[1]), &c = m.point(T.v[2]);
     if (chart_orient(ch, a, b, c) != Sign::Positive)
@@ -219,13 +222,17 @@ void check_sizes(const SurfaceMesh& m, SurfaceAudit& out) {
 void audit_surface_structure(const SurfaceMesh& m, SurfaceAudit& out) {
   check_incidences(m, out);
   check_chains(m, out);
+  std::vector<std::vector<std::uint32_t>> by_facet(m.facets.size());
   for (std::uint32_t t = 0; t < m.subfacets().size(); ++t) {
     const Subfacet& T = m.subfacet(t);
-    if (T.alive && (T.facet >= m.facets.size() || !m.facets[T.facet].is_face))
+    if (!T.alive) continue;
+    if (T.facet >= m.facets.size() || !m.facets[T.facet].is_face)
       out.add("surface.homes: " + tri_str(T) + " belongs to no face");
+    else
+      by_facet[T.facet].push_back(t);
   }
   for (std::uint32_t f = 0; f < m.facets.size(); ++f)
-    if (m.facets[f].is_face) check_facet(m, f, out);
+    if (m.facets[f].is_face) check_facet(m, f, by_facet[f], out);
   check_sizes(m, out);
 }
 

@@ -29,6 +29,13 @@
 //     plane is "unspecified" (predicates.hpp) and depends on the argument order, so pdr
 //     never relies on it for constructed points; chart_incircle is exact for whatever
 //     doubles the points are.
+//   Alternatives rejected: the 2D incircle of the chart images is consistent but is not
+//   the 3D circle test on a tilted facet (a projection maps circles to ellipses), so its
+//   triangulation would not be a face set of the 3D Delaunay tetrahedralization;
+//   incircle3_sos on the 3D points is the right test on coplanar points but may be
+//   inconsistent (argument-order dependent) a few ulps off the plane, and Bowyer-Watson
+//   cavities then need repair. chart_incircle equals the latter where it is specified and
+//   stays a lifting elsewhere.
 // Limitation (near-planar facets). When facet vertices are not exactly coplanar (a facet
 // planar only within tolerance, or constructed points on a tilted plane, which rounding
 // puts a few ulps off it), the chart triangulation is Delaunay for the lifted map, i.e. for

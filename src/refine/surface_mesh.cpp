@@ -37,6 +37,14 @@ std::optional<std::uint32_t> SurfaceMesh::find_subsegment(std::uint32_t u, std::
   return std::nullopt;
 }
 
+std::optional<std::uint32_t> SurfaceMesh::find_subfacet(std::uint32_t a, std::uint32_t b,
+                                                         std::uint32_t c) const {
+  // Every subfacet listed at a contains a; one with edge {b, c} is {a, b, c}.
+  for (const std::uint32_t t : vtris_[a])
+    if (a != b && a != c && edge_index(subfacets_[t], b, c) >= 0) return t;
+  return std::nullopt;
+}
+
 std::vector<std::uint32_t> SurfaceMesh::subfacets_on_edge(std::uint32_t f, std::uint32_t u,
                                                           std::uint32_t w) const {
   std::vector<std::uint32_t> out;

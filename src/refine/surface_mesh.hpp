@@ -103,6 +103,8 @@ class SurfaceMesh {
 
   // The subsegment with endpoints u and w, if any.
   std::optional<std::uint32_t> find_subsegment(std::uint32_t u, std::uint32_t w) const;
+  // The live subfacet with vertices {a, b, c} (any facet), if any.
+  std::optional<std::uint32_t> find_subfacet(std::uint32_t a, std::uint32_t b, std::uint32_t c) const;
   // The live subfacets of facet f having edge {u, w} (one or two).
   std::vector<std::uint32_t> subfacets_on_edge(std::uint32_t f, std::uint32_t u,
                                                std::uint32_t w) const;

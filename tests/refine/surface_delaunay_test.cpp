@@ -65,6 +65,13 @@ TEST(SurfaceDelaunay, DataDomainsConform) {
   }
 }
 
+TEST(SurfaceDelaunay, FrameAndInteriorSegmentConform) {
+  for (const Plc& plc : {frame_box(), box_with_interior_segment()}) {
+    const SurfaceInit init = init_surface(analyze(plc));
+    EXPECT_EQ(missing_subfacets(init.mesh), 0u);
+  }
+}
+
 TEST(SurfaceDelaunay, CocircularGridConforms) {
   for (const int n : {4, 8}) {
     const SurfaceInit init = init_surface(analyze(grid_facet_box(n)));

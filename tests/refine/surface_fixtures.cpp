@@ -80,6 +80,29 @@ Plc grid_facet_box(int n) {
   return plc;
 }
 
+Plc frame_box() {
+  std::vector<Point> p{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 0, 1}, {4, 0, 1},
+                       {4, 4, 1}, {0, 4, 1}, {1.5, 1.5, 0}, {2.5, 1.5, 0}, {2.5, 2.5, 0},
+                       {1.5, 2.5, 0}, {1.5, 1.5, 1}, {2.5, 1.5, 1}, {2.5, 2.5, 1}, {1.5, 2.5, 1}};
+  Plc plc = make_plc(p, {{{0, 1, 2, 3}, {8, 9, 10, 11}},
+                         {{4, 5, 6, 7}, {12, 13, 14, 15}},
+                         {{0, 1, 5, 4}}, {{1, 2, 6, 5}}, {{2, 3, 7, 6}}, {{3, 0, 4, 7}},
+                         {{8, 9, 13, 12}}, {{9, 10, 14, 13}}, {{10, 11, 15, 14}}, {{11, 8, 12, 15}}});
+  plc.facets[0].holes.push_back({2, 2, 0});
+  plc.facets[1].holes.push_back({2, 2, 1});
+  return plc;
+}
+
+Plc box_with_interior_segment() {
+  Plc plc = box({0, 0, 0}, {3, 2, 1});
+  const auto n = static_cast<std::uint32_t>(plc.points.size());
+  plc.points.push_back({1, 1, 1});
+  plc.points.push_back({2, 1, 1});
+  plc.facets[1].polygons.push_back({n, n + 1});
+  relabel(plc);
+  return plc;
+}
+
 Plc rotated_box(double a, double b, double c) {
   Plc plc = box({0, 0, 0}, {a, b, c});
   for (Point& p : plc.points) {

@@ -28,6 +28,14 @@ rc::Gen<Plc> gen_box_union();
 // cocircular.
 Plc grid_facet_box(int n);
 
+// A square frame (genus one): [0,4]^2 x [0,1] minus the hole [1.5,2.5]^2 x [0,1]; the caps
+// are facets with two polygons and a facet hole point.
+Plc frame_box();
+
+// The box [0,3]x[0,2]x[0,1] whose top facet also holds the segment (1,1,1)-(2,1,1) as a
+// 2-vertex polygon (an interior segment: the facet lies on both of its sides).
+Plc box_with_interior_segment();
+
 // The box [0,a]x[0,b]x[0,c] rotated about the z axis by the angle with cosine 3/5 (as
 // doubles: the walls stay exactly vertical, hence exactly planar, but tilted).
 Plc rotated_box(double a, double b, double c);

@@ -38,6 +38,38 @@ TEST(SurfaceInit, CubeInCube) { expect_clean("cube-in-cube.poly"); }
 TEST(SurfaceInit, LPrism) { expect_clean("l-prism.poly"); }
 TEST(SurfaceInit, TeeAdmissible) { expect_clean("tee-admissible.poly"); }
 
+TEST(SurfaceInit, FrameWithFacetHoles) {
+  const DomainAnalysis a = analyze(frame_box());
+  ASSERT_TRUE(a.report.admissible);
+  const SurfaceInit init = init_surface(a);
+  const SurfaceAudit audit = audit_surface(init.mesh);
+  EXPECT_TRUE(audit.ok()) << describe(audit);
+  // No subfacet of a cap lies in the hole.
+  for (const std::uint32_t f : {0u, 1u})
+    for (const std::uint32_t t : init.mesh.facet_subfacets(f)) {
+      double cx = 0, cy = 0;
+      for (const std::uint32_t v : init.mesh.subfacet(t).v) {
+        cx += init.mesh.point(v)[0] / 3;
+        cy += init.mesh.point(v)[1] / 3;
+      }
+      EXPECT_FALSE(cx > 1.5 && cx < 2.5 && cy > 1.5 && cy < 2.5);
+    }
+}
+
+TEST(SurfaceInit, InteriorSegmentIsConformedOnBothSides) {
+  const DomainAnalysis a = analyze(box_with_interior_segment());
+  ASSERT_TRUE(a.report.admissible);
+  const SurfaceInit init = init_surface(a);
+  const SurfaceMesh& m = init.mesh;
+  const SurfaceAudit audit = audit_surface(m);
+  EXPECT_TRUE(audit.ok()) << describe(audit);
+  const auto s = a.domain.find_segment(8, 9);
+  ASSERT_TRUE(s.has_value());
+  const auto chain = m.chain(*s);
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+    EXPECT_EQ(m.subfacets_on_edge(1, chain[i], chain[i + 1]).size(), 2u);
+}
+
 TEST(SurfaceInit, BoxCountsAndHomes) {
   // box [0,3]x[0,2]x[0,1], d = 1/sqrt(2): subsegments < sqrt(2): the 3-edges in 4 pieces,
   // the 2-edges in 2, the 1-edges unsplit.
