@@ -23,20 +23,23 @@ void CavityCommitter::number_boundary_vertices(std::size_t nb, std::size_t verte
     commit_stamp_ = 1;
   }
   const std::size_t ghost_entry = vertex_count;
-  std::uint32_t locals = 0;
   local_.resize(3 * nb);
+  std::uint32_t locals = 0;
   for (std::size_t i = 0; i < nb; ++i) {
     const auto& fv = tables::kFaceVertex[faces_[i]];
     for (int k = 0; k < 3; ++k) {
       const VertexId x = verts_[4 * i + fv[k]];
       const std::size_t entry = x == kGhostVertex ? ghost_entry : std::size_t{x};
       std::uint32_t* e = &vertex_local_[2 * entry];
-      // Branch-free: a vertex seen first in this commit takes the next number.
-      const std::uint32_t fresh = e[0] != commit_stamp_;
-      e[1] = fresh ? locals : e[1];
+      // Branch-free (whether a vertex is new is random): a vertex seen first in this
+      // commit takes the next number.
+      const std::uint32_t old = e[1];
+      const std::uint32_t fresh = 0u - static_cast<std::uint32_t>(e[0] != commit_stamp_);
+      const std::uint32_t number = old ^ ((old ^ locals) & fresh);
+      locals -= fresh;  // fresh is 0 or all ones
       e[0] = commit_stamp_;
-      locals += fresh;
-      local_[3 * i + k] = e[1];
+      e[1] = number;
+      local_[3 * i + k] = number;
     }
   }
   locals_ = locals;

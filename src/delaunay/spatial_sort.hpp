@@ -3,9 +3,10 @@
 //
 // The points are shuffled by a seeded generator; the last half of the shuffled list is
 // the last round, the last half of the rest the round before it, and so on down to a first
-// round of at most `min_round` points. Each round is sorted by the Hilbert index of the
-// point in a 2^b grid over the bounding box (b from 2 to 21, growing with the round size) (Skilling's transpose algorithm, from J.
-// Skilling, "Programming the Hilbert curve", AIP Conf. Proc. 707, 2004). Consecutive points
+// round of at most `min_round` points. Each round is sorted, by a radix sort, on the Hilbert
+// index of the point's cell in a 2^b grid over the bounding box, b from 2 to 10 growing
+// with the point count (the index by Skilling's transpose algorithm: J. Skilling,
+// "Programming the Hilbert curve", AIP Conf. Proc. 707, 2004). Consecutive points
 // are then close, so a walk from the last inserted tet is short, while the random rounds
 // keep the expected total work optimal.
 // The order is a heuristic only: the coordinates are rounded to the grid here, and no
@@ -21,7 +22,7 @@
 
 namespace pdr {
 
-// Hilbert index of grid cell (x, y, z), each coordinate < 2^bits, bits <= 21.
+// Hilbert index of grid cell (x, y, z), each coordinate < 2^bits, 1 <= bits <= 10.
 std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits);
 
 // Sorts ids in place by the Hilbert index of pts[id] over the box [lo, hi].
