@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "app/summary.hpp"
+#include "mesh/plc.hpp"
+#include "refine/refine_seq.hpp"
+
 namespace pdr::app {
 
 struct DelaunayArgs {
@@ -32,6 +36,22 @@ struct CheckArgs {
 // Registers `pdr check` and its options on `app`, filling `args` when parsed.
 CLI::App* add_check_command(CLI::App& app, CheckArgs& args);
 int run_check(const CheckArgs& args);
+
+struct MeshArgs {
+  std::string domain;                  // DOMAIN.poly / .smesh
+  std::string prefix;                  // output prefix
+  std::vector<std::string> formats{"node", "vtu"};
+  refine::RefineOptions options;
+  bool check = true;
+  bool json = false;
+  std::uint64_t seed = 0x5EED;
+  unsigned threads = 2;
+};
+CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
+int run_mesh(const MeshArgs& args);
+// The mesher on a PLC (shared with the default job); fills `summary`, returns an exit
+// code; throws InputError, RefineError, SurfaceError.
+int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary);
 
 struct DefaultArgs {
   std::string prefix = "out/default";

@@ -45,6 +45,9 @@ int dispatch(int argc, char** argv) {
   cdel->add_flag("--json", del.json, "Print the summary as one JSON object");
   cdel->add_option("--threads", del.threads, "Checker threads")->check(CLI::Range(1, 256));
 
+  MeshArgs mesh;
+  CLI::App* cmesh = add_mesh_command(app, mesh);
+
   CheckArgs chk;
   CLI::App* cchk = add_check_command(app, chk);
 
@@ -56,6 +59,7 @@ int dispatch(int argc, char** argv) {
   }
   if (cdel->parsed()) return run_delaunay(del);
   if (cchk->parsed()) return run_check(chk);
+  if (cmesh->parsed()) return run_mesh(mesh);
   return run_default(def);
 }
 

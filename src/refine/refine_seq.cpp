@@ -1,0 +1,322 @@
+// SeqRefinement (paper §3, Fig. 2); see refine_seq.hpp.
+#include "refine/refine_seq.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "geom/construct.hpp"
+#include "geom/encroach.hpp"
+#include "mesh/tables.hpp"
+#include "refine/refine_audit.hpp"
+#include "refine/refine_quality.hpp"
+#include "refine/surface_insert.hpp"
+#include "refine/surface_split.hpp"
+
+namespace pdr::refine {
+namespace {
+
+struct Entry {
+  TetId t;
+  std::array<VertexId, 4> v;
+};
+
+std::string fmt(const Point& p) {
+  std::ostringstream os;
+  os.precision(17);
+  os << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
+  return os.str();
+}
+
+class Refiner {
+ public:
+  Refiner(VolumeMesh& m, const RefineOptions& o) : m_(m), o_(o) {}
+
+  RefineResult run() {
+    res_.stats.vertex_cap = o_.max_vertices != 0 ? o_.max_vertices : derived_cap();
+    res_.stats.h = std::numeric_limits<double>::infinity();
+    const TetStore& s = m_.dt.store();
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
+    while (head_ < queue_.size()) {
+      const Entry e = queue_[head_++];
+      if (head_ > 4096 && head_ * 2 > queue_.size()) {
+        queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head_));
+        head_ = 0;
+      }
+      if (!same(e)) continue;
+      if (m_.dt.num_points() >= res_.stats.vertex_cap) {
+        res_.stop_reason = "refine.cap: " + std::to_string(m_.dt.num_points()) +
+                           " vertices reached the cap of " +
+                           std::to_string(res_.stats.vertex_cap) +
+                           " (derived from the input size, its bounding box, d, B and the "
+                           "size bounds); the domain is probably outside the theory";
+        break;
+      }
+      refine_tet(e.t);
+      if (o_.progress && (++steps_ & 0x3FFF) == 0)
+        std::fprintf(stderr, "\rrefine: %zu vertices, %zu queued   ", m_.dt.num_points(),
+                     queue_.size() - head_);
+    }
+    if (o_.progress) std::fprintf(stderr, "\n");
+    collect_leftovers();
+    return std::move(res_);
+  }
+
+ private:
+  VolumeMesh& m_;
+  const RefineOptions o_;
+  RefineResult res_;
+  std::vector<Entry> queue_;
+  std::size_t head_ = 0;
+  std::uint64_t steps_ = 0;
+  Cavity cav_, cav2_;
+  std::vector<TetId> star_;
+  std::vector<std::uint8_t> mark_;
+  std::vector<std::pair<std::array<VertexId, 4>, std::string>> refused_;
+
+  const Point& pt(VertexId v) const { return m_.dt.point(v); }
+
+  std::size_t derived_cap() const {
+    // A resource limit, not a geometric decision: 1000 + 64 n + 16 (box volume) / u^3 with
+    // u the smallest of d/2, L/2 and cbrt(V) given.
+    const auto& pts = m_.dt.points();
+    Point lo = pts[0], hi = pts[0];
+    for (const Point& p : pts)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    const double vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+    double u = o_.d > 0 && std::isfinite(o_.d) ? o_.d / 2 : std::cbrt(vol) / 8;
+    if (o_.size) u = std::min(u, *o_.size / 2);
+    if (o_.max_volume) u = std::min(u, std::cbrt(*o_.max_volume));
+    const double cap = 1000.0 + 64.0 * static_cast<double>(pts.size()) + 16.0 * vol / (u * u * u);
+    return static_cast<std::size_t>(std::min(cap, 2.0e9));
+  }
+
+  std::array<VertexId, 4> verts(TetId t) const {
+    const VertexId* v = m_.dt.store().vertices(t);
+    return {v[0], v[1], v[2], v[3]};
+  }
+  bool same(const Entry& e) const {
+    const TetStore& s = m_.dt.store();
+    return e.t < s.slots() && s.is_alive(e.t) && verts(e.t) == e.v;
+  }
+
+  bool bad(TetId t) const {
+    const VertexId* v = m_.dt.store().vertices(t);
+    const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
+    if (ratio_at_least(a, b, c, d, o_.ratio)) return true;
+    if (o_.size && radius_above(a, b, c, d, *o_.size)) return true;
+    if (o_.max_volume && volume_above(a, b, c, d, *o_.max_volume)) return true;
+    return false;
+  }
+  void consider(TetId t) {
+    if (bad(t)) queue_.push_back({t, verts(t)});
+  }
+  void queue_star() {
+    const TetStore& s = m_.dt.store();
+    for (const TetId t : star_)
+      if (!s.is_ghost(t) && m_.is_inside(t)) consider(t);
+  }
+
+  void refuse(TetId t, std::string why) {
+    ++res_.stats.refused;
+    refused_.push_back({verts(t), std::move(why)});
+  }
+
+  // Subsegments that are edges of the closure tets of `c` and whose closed diametral
+  // ball holds p (Fig. 2 "p encroaches subsegment s ∈ C_p").
+  std::optional<std::uint32_t> encroached_subsegment(const Cavity& c, const Point& p) const {
+    const TetStore& s = m_.dt.store();
+    auto scan = [&](TetId t) -> std::optional<std::uint32_t> {
+      if (s.is_ghost(t)) return std::nullopt;
+      const VertexId* v = s.vertices(t);
+      for (const auto& e : tables::kEdgeVertex) {
+        const auto sub = m_.subsegment(v[e[0]], v[e[1]]);
+        if (sub && in_diametral_ball(pt(v[e[0]]), pt(v[e[1]]), p) != Sign::Negative)
+          return sub;
+      }
+      return std::nullopt;
+    };
+    for (const TetId t : c.conflict)
+      if (auto r = scan(t)) return r;
+    for (const TetId t : c.ring)
+      if (auto r = scan(t)) return r;
+    return std::nullopt;
+  }
+
+  // The subfacet of largest circumradius among the faces of the closure tets whose closed
+  // equatorial ball holds p (Fig. 2 "f <- max radius(f) that p encroaches").
+  std::optional<std::uint32_t> encroached_subfacet(const Cavity& c, const Point& p) const {
+    std::optional<std::uint32_t> best;
+    double best_r2 = -1;
+    auto scan = [&](TetId t) {
+      for (int f = 0; f < 4; ++f) {
+        const auto sf = m_.face_subfacet(t, f);
+        if (!sf) continue;
+        const Subfacet& x = m_.surf.subfacet(*sf);
+        const Point &a = m_.surf.point(x.v[0]), &b = m_.surf.point(x.v[1]),
+                    &cc = m_.surf.point(x.v[2]);
+        if (in_equatorial_ball(a, b, cc, p) == Sign::Negative) continue;
+        const double r2 = construct::triangle_circumradius2(a, b, cc);  // choice only
+        if (r2 > best_r2) best_r2 = r2, best = *sf;
+      }
+    };
+    for (const TetId t : c.conflict)
+      scan(t);
+    for (const TetId t : c.ring) scan(t);
+    return best;
+  }
+
+  // Locates p from `hint` and builds its cavity into `c`; false when p is a vertex.
+  bool plan(const Point& p, TetId hint, Cavity& c, bool& outside) {
+    const Location loc = m_.dt.locate(p, hint);
+    if (loc.kind == Location::Kind::OnVertex) return false;
+    outside = loc.kind == Location::Kind::OutsideHull || !m_.is_inside(loc.tet);
+    m_.dt.build_cavity(p, loc.tet, c);
+    return true;
+  }
+
+  void after_insert(VertexId v, const char* what, double size2) {
+    if (o_.audit) {
+      if (o_.admissible) {
+        audit_insertion(m_, v, star_, what, size2, res_.stats.h);
+      } else {
+        try {
+          audit_insertion(m_, v, star_, what, size2, res_.stats.h);
+        } catch (const RefineError& e) {
+          if (res_.stats.audit_failures++ == 0) res_.stats.audit_note = e.what();
+        }
+      }
+    }
+    queue_star();
+  }
+
+  void split(std::uint32_t sub, TetId hint) {
+    const Subsegment& x = m_.surf.subsegment(sub);
+    const Point a = m_.surf.point(x.v[0]), b = m_.surf.point(x.v[1]);
+    double l2 = 0;
+    for (int k = 0; k < 3; ++k) l2 += (a[k] - b[k]) * (a[k] - b[k]);
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(l2) / 2);
+    const SplitResult r = split_subsegment(m_.surf, sub);
+    const Point p = m_.surf.point(r.vertex);
+    bool outside = false;
+    if (!plan(p, hint, cav_, outside))
+      throw RefineError("refine.split: the midpoint " + fmt(p) + " of " +
+                        m_.surf.segment_name(x.segment) + " is already a vertex");
+    const VertexId v = commit_point(m_, cav_, r.vertex, star_, mark_);
+    ++res_.stats.subsegment_splits;
+    after_insert(v, "subsegment", l2 / 4);
+  }
+
+  // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t.
+  void refine_subfacet(std::uint32_t f, TetId t) {
+    const FacetCavity fc = plan_circumcenter(m_.surf, f);
+    if (fc.status == CavityStatus::Encroaches && !fc.encroached.empty()) {
+      split(fc.encroached.front(), t);
+      return;
+    }
+    if (fc.status != CavityStatus::Ok) {
+      refuse(t, std::string("refine.subfacet: the circumcenter of subfacet ") +
+                    std::to_string(f) + " of " + m_.surf.facet_name(fc.facet) +
+                    " cannot be inserted (" + cavity_status_name(fc.status) + ")");
+      return;
+    }
+    bool outside = false;
+    if (!plan(fc.p, t, cav2_, outside)) {
+      refuse(t, "refine.subfacet: circumcenter " + fmt(fc.p) + " is already a vertex");
+      return;
+    }
+    if (const auto s = encroached_subsegment(cav2_, fc.p)) {
+      split(*s, t);
+      return;
+    }
+    const Subfacet& x = m_.surf.subfacet(f);
+    const double r2 = construct::triangle_circumradius2(
+        m_.surf.point(x.v[0]), m_.surf.point(x.v[1]), m_.surf.point(x.v[2]));
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(r2 / 2));
+    const std::uint32_t sv = m_.surf.add_vertex(fc.p, {HomeKind::Facet, fc.facet});
+    const std::vector<std::uint32_t> fresh = commit_facet_cavity(m_.surf, fc, sv);
+    const VertexId v = commit_point(m_, cav2_, sv, star_, mark_);
+    ++res_.stats.subfacet_circumcenters;
+    verify_subfacets_present(v, fresh);
+    after_insert(v, "subfacet", r2);
+  }
+
+  // The new subfacets (p, e) must be faces of T (§1.1): each among the star's faces.
+  void verify_subfacets_present(VertexId v, const std::vector<std::uint32_t>& fresh) {
+    std::size_t seen = 0;
+    const TetStore& s = m_.dt.store();
+    for (const TetId t : star_)
+      for (int f = 0; f < 4; ++f)
+        if (s.vertex(t, f) != v && m_.face_subfacet(t, f)) ++seen;  // f contains v
+    // Each new subfacet is on two tets of the star.
+    if (seen != 2 * fresh.size())
+      throw RefineError("volume.conformity: after inserting the subfacet circumcenter " +
+                        fmt(pt(v)) + ", " + std::to_string(fresh.size()) +
+                        " new subfacets but " + std::to_string(seen) +
+                        " tet faces at the vertex are subfacets (expected twice as many)");
+  }
+
+  void refine_tet(TetId t) {
+    const VertexId* v = m_.dt.store().vertices(t);
+    const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
+    const Point p = construct::circumcenter(a, b, c, d);
+    bool outside = false;
+    if (!plan(p, t, cav_, outside)) {
+      refuse(t, "refine.tet: circumcenter " + fmt(p) + " is already a vertex");
+      return;
+    }
+    if (const auto s = encroached_subsegment(cav_, p)) {
+      split(*s, t);
+      return;
+    }
+    if (const auto f = encroached_subfacet(cav_, p)) {
+      refine_subfacet(*f, t);
+      return;
+    }
+    if (outside) {
+      refuse(t, "refine.outside: circumcenter " + fmt(p) +
+                    " lies outside the domain but encroaches no subsegment or subfacet of "
+                    "its cavity's closure");
+      return;
+    }
+    const double r2 = construct::circumradius2(a, b, c, d);
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(r2) / 2);
+    const VertexId nv = commit_point(m_, cav_, kNone, star_, mark_);
+    ++res_.stats.tet_circumcenters;
+    after_insert(nv, "tet", r2);
+  }
+
+  void collect_leftovers() {
+    const TetStore& s = m_.dt.store();
+    std::sort(refused_.begin(), refused_.end());
+    for (TetId t = 0; t < s.slots(); ++t) {
+      if (!s.is_alive(t) || s.is_ghost(t) || !m_.is_inside(t)) continue;
+      const VertexId* v = s.vertices(t);
+      if (!ratio_at_least(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), o_.ratio)) continue;
+      Leftover l;
+      l.tet = t;
+      l.v = verts(t);
+      for (int k = 0; k < 4; ++k) l.p[k] = pt(v[k]);
+      l.ratio = ratio_of(l.p[0], l.p[1], l.p[2], l.p[3]);
+      auto it = std::lower_bound(refused_.begin(), refused_.end(),
+                                 std::pair<std::array<VertexId, 4>, std::string>{l.v, ""});
+      l.reason = it != refused_.end() && it->first == l.v
+                     ? it->second
+                     : (res_.stop_reason.empty() ? "refine.unrefined: never refined"
+                                                 : res_.stop_reason);
+      res_.leftovers.push_back(std::move(l));
+    }
+  }
+};
+
+}  // namespace
+
+RefineResult refine(VolumeMesh& m, const RefineOptions& options) {
+  return Refiner(m, options).run();
+}
+
+}  // namespace pdr::refine
