@@ -1,6 +1,10 @@
-// `pdr check MESH [--domain D] [--ratio B] [--h H] [--json]`: the exact oracle on a mesh
-// from any mesher. Exit 0 when every check passes, 1 with violations, 2 on bad input.
+// `pdr check MESH [--domain D] [--ratio B] [--h H] [--json] [--explain T] [--vtu OUT.vtu]`:
+// the exact oracle on a mesh from any mesher. Exit 0 when every check passes, 1 with
+// violations, 2 on bad input. --explain T adds tet T described in full (check/explain.hpp);
+// --vtu writes the mesh with per-tet fields (check/fields.hpp) for ParaView. Both see every
+// finding (the checker runs unlimited, then the report is cut to --max-reported).
 #include <iostream>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -8,7 +12,10 @@
 #include "app/exit_codes.hpp"
 #include "app/summary.hpp"
 #include "check/check.hpp"
+#include "check/explain.hpp"
+#include "check/fields.hpp"
 #include "io/mesh_io.hpp"
+#include "io/vtu.hpp"
 
 namespace pdr::app {
 
@@ -27,8 +34,24 @@ CLI::App* add_check_command(CLI::App& app, CheckArgs& chk) {
   cchk->add_flag("--json", chk.json, "Print the report as one JSON object");
   cchk->add_option("--threads", chk.threads, "Worker threads")->check(CLI::Range(1, 256));
   cchk->add_option("--max-reported", chk.max_reported, "Findings listed per check");
+  cchk->add_option("--explain", chk.explain,
+                   "Describe tet T (0-based, as in the report and ParaView's cell ids) in full");
+  cchk->add_option("--vtu", chk.vtu,
+                   "Write the mesh to OUT.vtu with per-tet fields: ratio, failed_checks, "
+                   "fail:<check id>");
   return cchk;
 }
+
+namespace {
+
+// Keeps the first `n` findings of each check (they are the first by element id).
+void cut_findings(check::Report& report, std::size_t n) {
+  for (check::CheckResult& r : report.checks)
+    if (r.findings.size() > n) r.findings.resize(n);
+  report.options.max_reported = n;
+}
+
+}  // namespace
 
 int run_check(const CheckArgs& args) {
   PhaseTimer timer;
@@ -37,16 +60,39 @@ int run_check(const CheckArgs& args) {
   std::optional<Plc> domain;
   if (args.domain) domain = io::read_domain(*args.domain);
   timer.lap("read");
+  if (args.explain && *args.explain >= mesh.tets.size()) {
+    std::cerr << "pdr check: --explain " << *args.explain << ": the mesh has "
+              << mesh.tets.size() << " tets, numbered from 0\n";
+    return kExitBadInput;
+  }
 
   check::Options opt;
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
   opt.threads = args.threads;
-  opt.max_reported = args.max_reported;
+  const bool every_finding = args.explain || args.vtu;
+  opt.max_reported = every_finding ? std::numeric_limits<std::size_t>::max() : args.max_reported;
   const auto view = check::view_of(mesh);
-  const check::Report report =
+  check::Report report =
       domain ? check::check_mesh(view, *domain, opt) : check::check_mesh(view, opt);
   timer.lap("check");
+
+  std::optional<check::TetExplanation> explained;
+  if (args.explain) explained = check::explain_tet(view, report, *args.explain);
+  bool vtu_written = false;
+  if (args.vtu) {
+    std::vector<io::CellField> fields;
+    for (check::TetField& f : check::tet_fields(view, report))
+      fields.push_back({std::move(f.name), std::move(f.values)});
+    try {
+      io::write_vtu(mesh, *args.vtu, fields);
+      vtu_written = true;
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "pdr check: --vtu " << *args.vtu << " not written: " << e.what() << "\n";
+    }
+    timer.lap("vtu");
+  }
+  if (every_finding) cut_findings(report, args.max_reported);
 
   if (args.json) {
     nlohmann::json j = check::to_json(report);
@@ -54,6 +100,8 @@ int run_check(const CheckArgs& args) {
                   {"domain", args.domain ? *args.domain : ""},
                   {"skipped_elements", info.skipped_elements},
                   {"dropped_high_order_nodes", info.dropped_high_order_nodes}};
+    if (explained) j["explain"] = check::to_json(*explained);
+    if (args.vtu) j["vtu"] = vtu_written ? nlohmann::json(*args.vtu) : nlohmann::json(nullptr);
     j["seconds"] = timer.phases();
     std::cout << j.dump(2) << '\n';
   } else {
@@ -61,6 +109,8 @@ int run_check(const CheckArgs& args) {
     if (info.skipped_elements > 0)
       std::cout << "note: " << info.skipped_elements
                 << " non-tetrahedral elements in the file were not checked\n";
+    if (explained) std::cout << "explain " << check::to_text(*explained);
+    if (vtu_written) std::cout << "wrote " << *args.vtu << " (per-tet fields)\n";
     std::cout << "time: read " << timer.phases()["read"].get<double>() << " s, check "
               << timer.phases()["check"].get<double>() << " s\n";
   }

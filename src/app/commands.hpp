@@ -32,6 +32,8 @@ struct CheckArgs {
   bool json = false;
   unsigned threads = 2;
   std::size_t max_reported = 20;
+  std::optional<std::size_t> explain;  // --explain T: describe tet T in full
+  std::optional<std::string> vtu;      // --vtu OUT.vtu: the mesh with per-tet check fields
 };
 // Registers `pdr check` and its options on `app`, filling `args` when parsed.
 CLI::App* add_check_command(CLI::App& app, CheckArgs& args);
