@@ -21,7 +21,8 @@
 // Guard (a run never hangs, even with rounding or inadmissible input): the number of
 // vertices is capped at V_input + 16 (L / d + A / d^2) + 1024 (L: total segment length,
 // A: total facet area, in floating point: a resource limit, not a geometric decision), or
-// at SurfaceOptions::max_vertices when that is set and smaller. Reaching it throws
+// at SurfaceOptions::max_vertices when that is set and smaller, and never above 2^31
+// (vertex ids are 32-bit). Reaching it throws
 // SurfaceError("surface.guard: <facet or segment>: ..."). A degenerate cavity (excluded by
 // the exact arguments for coplanar points) throws SurfaceError naming the facet too.
 // d infinite (no two unrelated components) or not positive: nothing is refined.
