@@ -1,7 +1,8 @@
 // An in-memory mesh checked by pdr::check from another project (examples/check-consumer).
 // A unit cube split into 6 tets around its diagonal (Kuhn): valid and Delaunay (its 8
-// vertices are cospherical); then one vertex moved inside a circumsphere, which must fail
-// delaunay.empty_sphere. Prints both verdicts; exits 0 when pdr judged as expected.
+// vertices are cospherical); then one vertex moved so that every circumsphere holds a
+// vertex, which must fail delaunay.empty_sphere. Prints both verdicts; exits 0 when pdr
+// judged as expected.
 #include <cstdint>
 #include <iostream>
 #include <vector>
@@ -26,9 +27,9 @@ int main() {
   const pdr::check::Report good = pdr::check::check_arrays(xyz, tets, {}, nullptr, opt);
   std::cout << pdr::check::to_text(good);
 
-  xyz[3 * 7 + 0] = 0.75;  // vertex 7 pulled in: the cube is no longer cospherical
-  xyz[3 * 7 + 1] = 0.75;
-  xyz[3 * 7 + 2] = 0.75;
+  xyz[3 * 7 + 0] = 1.25;  // vertex 7 pushed out along the diagonal: still positive tets,
+  xyz[3 * 7 + 1] = 1.25;  // but every circumsphere now holds a cube vertex
+  xyz[3 * 7 + 2] = 1.25;
   const pdr::check::Report bad = pdr::check::check_arrays(xyz, tets, {}, nullptr, opt);
   const nlohmann::json j = pdr::check::to_json(bad);
   std::cout << "schema_version " << j["schema_version"] << ", ok " << j["ok"] << "\n";

@@ -98,7 +98,8 @@ std::string list_text(const std::vector<std::uint32_t>& v, std::uint64_t total) 
 }
 
 std::string sign_word(Sign s) {
-  return s == Sign::Positive ? "positive" : s == Sign::Negative ? "negative (inverted)" : "zero (flat)";
+  if (s == Sign::Positive) return "positive";
+  return s == Sign::Negative ? "negative (inverted)" : "zero (flat)";
 }
 
 }  // namespace

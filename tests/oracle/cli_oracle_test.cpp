@@ -38,12 +38,12 @@ Outcome pdr_run(const std::string& args, bool with_stderr = true) {
   return r;
 }
 
-// The unit cube in 6 Kuhn tets (1-based, as TetGen writes), with vertex 8 = (1,1,1) pulled
-// to (0.75,0.75,0.75) along the diagonal: every tet stays positive, none stays Delaunay.
+// The unit cube in 6 Kuhn tets (1-based, as TetGen writes), with vertex 8 = (1,1,1) pushed
+// out to (1.25,1.25,1.25) along the diagonal: every tet stays positive, none stays Delaunay.
 void write_mesh(const ScratchDir& dir) {
   write_text(dir / "k.node",
              "8 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n5 0 0 1\n6 1 0 1\n7 0 1 1\n"
-             "8 0.75 0.75 0.75\n");
+             "8 1.25 1.25 1.25\n");
   write_text(dir / "k.ele",
              "6 4 0\n1 1 2 4 8\n2 1 4 3 8\n3 1 3 7 8\n4 1 7 5 8\n5 1 5 6 8\n6 1 6 2 8\n");
 }
