@@ -26,7 +26,7 @@ set_target_properties(pdr_mesh PROPERTIES EXPORT_NAME mesh)
 install(TARGETS pdr_check pdr_geom pdr_mesh EXPORT pdrTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${pdr_install_include})
-install(TARGETS pdr RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS pdr RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} OPTIONAL)
 
 # Headers: the public checker API and everything it includes (geom, mesh).
 install(FILES
