@@ -155,6 +155,18 @@ TEST_F(Cli, UnknownFormatIsAUsageError) {
   EXPECT_FALSE(fs::exists(path("out.ele")));
 }
 
+TEST_F(Cli, DefaultJobMeshesCubeInCubeChecksAndWrites) {
+  const Outcome r = run("-o " + path("def/x") + " --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["check"], "pass");
+  EXPECT_EQ(j["admissible"], true);
+  EXPECT_LT(j["ratio_max"].get<double>(), 2.0);
+  EXPECT_GT(j["tets"].get<int>(), 1000);
+  for (const char* ext : {".node", ".ele", ".face", ".vtu"})
+    EXPECT_TRUE(fs::exists(path(std::string("def/x") + ext))) << ext;
+}
+
 TEST_F(Cli, TetgenMeshOfABoxIsValidAndConforms) {
   if (!on_path("tetgen")) GTEST_SKIP() << "tetgen not installed";
   fs::copy_file(fs::path(PDR_DATA_DIR) / "box.poly", path("box.poly"));
