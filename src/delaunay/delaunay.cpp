@@ -1,6 +1,8 @@
 // Delaunay: the first tet, and insertion as locate + cavity + commit (delaunay.hpp).
 #include "delaunay/delaunay.hpp"
 
+#include <stdexcept>
+
 #include <cassert>
 #include <utility>
 
@@ -20,7 +22,9 @@ void Delaunay::init(VertexId a, VertexId b, VertexId c, VertexId d) {
   assert(empty());
   store_.clear();
   const Sign o = orient3d(points_[a], points_[b], points_[c], points_[d]);
-  assert(o != Sign::Zero);
+  // Always checked (O(1)): a flat first tet would corrupt everything after it.
+  if (o == Sign::Zero)
+    throw std::invalid_argument("Delaunay::init: the four points are coplanar");
   if (o == Sign::Negative) std::swap(a, b);
   const TetId t = store_.create(a, b, c, d);
   // Ghost tet across face f: the face's outward orientation, then the ghost (tables.hpp).
