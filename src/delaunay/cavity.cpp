@@ -23,6 +23,13 @@ void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const P
   for (int f = 0; f < 4; ++f) s.prefetch(s.neighbour(seed, f));
   for (std::size_t i = 0; i < out.conflict.size(); ++i) {
     const TetId t = out.conflict[i];
+    // Request the points of the neighbours still to be tested before testing any.
+    for (int f = 0; f < 4; ++f) {
+      const TetId u = s.neighbour(t, f);
+      if (mark_[u] != kUnseen || s.is_ghost(u)) continue;
+      const VertexId* w = s.vertices(u);
+      for (int k = 0; k < 4; ++k) __builtin_prefetch(&pts[w[k]]);
+    }
     for (int f = 0; f < 4; ++f) {
       const TetId u = s.neighbour(t, f);
       const std::uint8_t m = mark_[u];

@@ -42,6 +42,8 @@ Location locate(const TetStore& s, std::span<const Point> pts, const Point& p, T
   std::uint32_t steps = 1;
   for (;;) {
     const VertexId* v = s.vertices(t);
+    // The next tet is one of the neighbours: start loading them while the tests run.
+    for (int f = 0; f < 4; ++f) s.prefetch(s.neighbour(t, f));
     const int first = static_cast<int>(rng.next() & 3u);
     int crossed = -1;
     for (int k = 0; k < 4; ++k) {
