@@ -60,12 +60,35 @@ Location Delaunay::locate(const Point& p, TetId hint) {
   return pdr::locate(store_, points_, p, hint, rng_);
 }
 
-TetId Delaunay::commit(const Cavity& c, VertexId v) {
+InsertResult Delaunay::commit(const Cavity& c) { return commit(c, add_point(c.point)); }
+
+InsertResult Delaunay::commit(const Cavity& c, VertexId v) {
+  assert(points_[v] == c.point);
   stats_.conflict_tets += c.conflict.size();
   stats_.boundary_faces += c.boundary.size();
   ++stats_.inserted;
   last_ = committer_.commit(store_, c, v, points_.size());
-  return last_;
+#ifndef NDEBUG
+  // Debug level: the new tets are positive (star-shapedness of the cavity, §1.2).
+  for (TetId t : committer_.created()) {
+    const VertexId* w = store_.vertices(t);
+    if (w[3] != kGhostVertex)
+      assert(orient3d(points_[w[0]], points_[w[1]], points_[w[2]], points_[w[3]]) ==
+             Sign::Positive);
+  }
+#endif
+  return {Outcome::Inserted, v, last_};
+}
+
+InsertResult Delaunay::insert(const Point& p, TetId hint) {
+  const Location loc = locate(p, hint);
+  stats_.walk_steps += loc.steps;
+  if (loc.kind == Location::Kind::OnVertex) {
+    ++stats_.duplicates;
+    return {Outcome::Duplicate, loc.vertex, loc.tet};
+  }
+  build_cavity(p, loc.tet, cavity_);
+  return commit(cavity_);
 }
 
 InsertResult Delaunay::insert(VertexId v, TetId hint) {
@@ -77,8 +100,7 @@ InsertResult Delaunay::insert(VertexId v, TetId hint) {
     return {Outcome::Duplicate, loc.vertex, loc.tet};
   }
   build_cavity(p, loc.tet, cavity_);
-  const TetId t = commit(cavity_, v);
-  return {Outcome::Inserted, v, t};
+  return commit(cavity_, v);
 }
 
 }  // namespace pdr

@@ -1,11 +1,15 @@
 // Delaunay: an incremental Delaunay tetrahedralization of a growing point set
 // (Bowyer-Watson, paper §1.2), with the hull closed by ghost tets.
 //
-// Owns the points (vertex id = index into points()) and a TetStore. A point is first
-// added (add_point), then inserted: locate from a hint tet (walk.hpp), build the cavity
-// read-only (cavity.hpp), commit it (insert.hpp). The two-phase API (locate /
-// build_cavity / commit) is public so refinement can inspect a cavity before committing
-// it (encroachment, §3) and parallel code can drop it (§4.1).
+// Owns the points (vertex id = index into points()) and a TetStore. Inserting a point:
+// locate it from a hint tet (walk.hpp), build its cavity read-only (cavity.hpp), commit
+// the cavity (insert.hpp). The steps are public so refinement can start from a known tet
+// (the one whose circumcentre it inserts), inspect a cavity before committing it
+// (encroachment, §3) and parallel code can drop it (§4.1):
+//   Location loc = dt.locate(p, known_tet);            // OnVertex: a duplicate
+//   dt.build_cavity(p, loc.tet, cavity);               // read-only
+//   if (acceptable(cavity)) dt.commit(cavity);         // p becomes a vertex
+// or in one call: dt.insert(p, known_tet).
 //
 // Invariants after every public call (the tests' audit level checks them all):
 //   - the store is topologically valid (TetStore::check_topology), every finite tet is
@@ -80,14 +84,19 @@ class Delaunay {
   // Walk from `hint` (kNoTet: from last_tet()). Precondition: !empty(), hint live.
   Location locate(const Point& p, TetId hint = kNoTet);
   // Cavity of p from a seed in conflict with p (a Location of kind InTet or OutsideHull
-  // gives one). Read-only on the triangulation.
+  // gives one). Read-only on the triangulation; `out`'s buffers are reused.
   void build_cavity(const Point& p, TetId seed, Cavity& out) {
     builder_.build(store_, points_, p, seed, out);
   }
-  // Commit a cavity built on the current triangulation for the point of vertex v.
-  // Returns a new tet incident to v.
-  TetId commit(const Cavity& c, VertexId v);
-  // All three steps. Outcome Inserted or Duplicate (then nothing changes).
+  // Commit a cavity built on the current triangulation (nothing changed since): c.point
+  // becomes a new vertex (appended to points()). Outcome Inserted.
+  InsertResult commit(const Cavity& c);
+  // The same for a point already added as vertex v (point(v) == c.point).
+  InsertResult commit(const Cavity& c, VertexId v);
+  // Locate + cavity + commit, walking from `hint` (kNoTet: last_tet()). Inserted, or
+  // Duplicate (then nothing changes, and the point is not added).
+  InsertResult insert(const Point& p, TetId hint = kNoTet);
+  // The same for a point already added as vertex v (bulk construction).
   InsertResult insert(VertexId v, TetId hint = kNoTet);
 
   // Audit: the topological invariants (geometry is checked by the tests' oracles).

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "delaunay/cavity.hpp"
@@ -37,6 +38,8 @@ class CavityCommitter {
   // vertex id in `s` is < vertex_count. Returns a new tet incident to v (a finite one when
   // there is one).
   TetId commit(TetStore& s, const Cavity& c, VertexId v, std::size_t vertex_count);
+  // The tets made by the last commit (valid until the next one).
+  std::span<const TetId> created() const { return ids_; }
 
  private:
   struct Slot {

@@ -39,9 +39,9 @@ TEST(Delaunay, FourPointsMakeOneTetAndFourGhosts) {
 }
 
 TEST(Delaunay, RandomPoints) {
-  const Delaunay dt = build(testing::random_cube(120, 1));
+  const Delaunay dt = build(testing::random_cube(80, 1));
   expect_valid(dt);
-  EXPECT_EQ(dt.stats().inserted, 116u);
+  EXPECT_EQ(dt.stats().inserted, 76u);
 }
 
 TEST(Delaunay, IntegerGrid6) {
@@ -50,7 +50,7 @@ TEST(Delaunay, IntegerGrid6) {
 }
 
 TEST(Delaunay, CosphericalLattice) {
-  for (int r2 : {9, 41, 101}) {
+  for (int r2 : {9, 41}) {
     SCOPED_TRACE(r2);
     const Delaunay dt = build(testing::sphere_lattice(r2));
     expect_valid(dt);
@@ -164,6 +164,51 @@ TEST(Cavity, IsTheConflictRegionAndChangesNothing) {
       for (int f = 0; f < 4; ++f) EXPECT_EQ(s.opposite(t, f), before.opposite(t, f));
     }
   }
+}
+
+TEST(Walk, ReportsInsideOutsideAndDuplicate) {
+  Delaunay dt = build(testing::grid(3));  // the cube [0,2]^3
+  for (TetId hint = 0; hint < dt.store().slots(); hint += 7) {
+    if (!dt.store().is_alive(hint)) continue;
+    const Location in = dt.locate({0.5, 1.25, 1.75}, hint);
+    EXPECT_EQ(in.kind, Location::Kind::InTet);
+    EXPECT_FALSE(dt.store().is_ghost(in.tet));
+    const Location face = dt.locate({0, 0.5, 0.25}, hint);  // on a hull face: closed tet
+    EXPECT_EQ(face.kind, Location::Kind::InTet);
+    const Location out = dt.locate({3, 1, 1}, hint);
+    ASSERT_EQ(out.kind, Location::Kind::OutsideHull);
+    const VertexId* g = dt.store().vertices(out.tet);
+    EXPECT_EQ(g[3], kGhostVertex);
+    EXPECT_EQ(exact::orient3d(dt.point(g[0]), dt.point(g[1]), dt.point(g[2]), {3, 1, 1}),
+              Sign::Positive);
+    const Location dup = dt.locate({2, 0, 1}, hint);
+    ASSERT_EQ(dup.kind, Location::Kind::OnVertex);
+    EXPECT_EQ(dt.point(dup.vertex), (Point{2, 0, 1}));
+  }
+}
+
+// The refinement path: locate from a known tet, inspect the cavity, commit or drop it.
+TEST(Delaunay, TwoPhaseInsertionFromAKnownTet) {
+  Delaunay dt = build(testing::random_cube(40, 8));
+  const std::size_t before = dt.num_points();
+  Cavity c;
+  const Point p{0.5, 0.5, 0.5};
+  const Location loc = dt.locate(p, dt.last_tet());
+  ASSERT_NE(loc.kind, Location::Kind::OnVertex);
+  dt.build_cavity(p, loc.tet, c);
+  EXPECT_EQ(dt.num_points(), before);  // dropping the cavity here would change nothing
+  const InsertResult r = dt.commit(c);
+  EXPECT_EQ(r.outcome, Outcome::Inserted);
+  EXPECT_EQ(r.vertex, before);
+  EXPECT_EQ(dt.point(r.vertex), p);
+  expect_valid(dt);
+  const InsertResult again = dt.insert(p, r.tet);
+  EXPECT_EQ(again.outcome, Outcome::Duplicate);
+  EXPECT_EQ(again.vertex, r.vertex);
+  EXPECT_EQ(dt.num_points(), before + 1);
+  const InsertResult outside = dt.insert(Point{2, -1, 0.5});
+  EXPECT_EQ(outside.outcome, Outcome::Inserted);
+  expect_valid(dt);
 }
 
 TEST(Export, TetsArePositiveAndFacesAreTheHull) {
