@@ -5,6 +5,7 @@
 
 #include "delaunay/spatial_sort.hpp"
 #include "geom/predicates.hpp"
+#include "mesh/huge_pages.hpp"
 
 namespace pdr {
 
@@ -34,8 +35,10 @@ BulkResult bulk_insert(Delaunay& dt, const BulkOptions& options) {
   if (options.spatial_sort)
     order = brio_order(std::move(order), dt.points(), options.seed, options.min_round);
   if (options.renumber) {
-    std::vector<Point> sorted(n);
-    for (std::size_t i = 0; i < n; ++i) sorted[i] = dt.point(order[i]);
+    std::vector<Point> sorted;
+    sorted.reserve(n);
+    advise_huge_pages(sorted.data(), n * sizeof(Point));
+    for (std::size_t i = 0; i < n; ++i) sorted.push_back(dt.point(order[i]));
     dt.set_points(std::move(sorted));
     result.input_index = std::move(order);
     order.resize(n);

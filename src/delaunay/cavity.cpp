@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "delaunay/conflict.hpp"
+#include "mesh/huge_pages.hpp"
 
 namespace pdr {
 
@@ -12,7 +13,11 @@ void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const P
   out.clear();
   out.point = p;
   out.seed = seed;
-  if (mark_.size() < s.slots()) mark_.resize(s.slots() + s.slots() / 2 + 64, kUnseen);
+  if (mark_.size() < s.slots()) {
+    mark_.reserve(s.slots() + s.slots() / 2 + 64);
+    advise_huge_pages(mark_.data(), mark_.capacity());
+    mark_.resize(mark_.capacity(), kUnseen);
+  }
   assert(in_conflict(s, pts, seed, p));
   mark_[seed] = kInside;
   out.conflict.push_back(seed);

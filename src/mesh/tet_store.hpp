@@ -68,7 +68,9 @@ class TetStore {
   std::size_t bytes_allocated() const { return data_.capacity() * sizeof(std::uint32_t); }
 
   // ---- writing -----------------------------------------------------------------------
-  void reserve(std::size_t tets) { data_.reserve(kRecord * tets); }
+  // Capacity for `tets` slots; large stores also ask the OS for huge pages (fewer TLB
+  // misses on the random-looking accesses of the cavity search).
+  void reserve(std::size_t tets);
   void clear() {
     data_.clear();
     free_head_ = kNoTet;

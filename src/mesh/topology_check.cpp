@@ -1,4 +1,4 @@
-// TetStore::check_topology: the combinatorial invariants of tet_store.hpp, decided
+// TetStore::reserve, and TetStore::check_topology: the combinatorial invariants of tet_store.hpp, decided
 // without geometry (orientation and the Delaunay property are checked elsewhere, with
 // predicates). Pure: reads the store, returns the violations found (at most a few dozen,
 // so a broken store does not flood a test log).
@@ -8,6 +8,7 @@
 
 #include "mesh/tables.hpp"
 #include "mesh/tet_store.hpp"
+#include "mesh/huge_pages.hpp"
 
 namespace pdr {
 
@@ -35,6 +36,11 @@ bool reversed_rotation(const std::array<VertexId, 3>& a, const std::array<Vertex
 }
 
 }  // namespace
+
+void TetStore::reserve(std::size_t tets) {
+  data_.reserve(kRecord * tets);
+  advise_huge_pages(data_.data(), data_.capacity() * sizeof(std::uint32_t));
+}
 
 std::vector<std::string> TetStore::check_topology() const {
   std::vector<std::string> out;
