@@ -60,9 +60,12 @@ Location Delaunay::locate(const Point& p, TetId hint) {
   return pdr::locate(store_, points_, p, hint, rng_);
 }
 
-InsertResult Delaunay::commit(const Cavity& c) { return commit(c, add_point(c.point)); }
+InsertResult Delaunay::commit(const Cavity& c) {
+  const VertexId v = add_point(c.point);
+  return {Outcome::Inserted, v, commit(c, v)};
+}
 
-InsertResult Delaunay::commit(const Cavity& c, VertexId v) {
+TetId Delaunay::commit(const Cavity& c, VertexId v) {
   assert(points_[v] == c.point);
   stats_.conflict_tets += c.conflict.size();
   stats_.boundary_faces += c.boundary.size();
@@ -77,7 +80,7 @@ InsertResult Delaunay::commit(const Cavity& c, VertexId v) {
              Sign::Positive);
   }
 #endif
-  return {Outcome::Inserted, v, last_};
+  return last_;
 }
 
 InsertResult Delaunay::insert(const Point& p, TetId hint) {
@@ -100,7 +103,7 @@ InsertResult Delaunay::insert(VertexId v, TetId hint) {
     return {Outcome::Duplicate, loc.vertex, loc.tet};
   }
   build_cavity(p, loc.tet, cavity_);
-  return commit(cavity_, v);
+  return {Outcome::Inserted, v, commit(cavity_, v)};
 }
 
 }  // namespace pdr

@@ -89,10 +89,11 @@ class Delaunay {
     builder_.build(store_, points_, p, seed, out);
   }
   // Commit a cavity built on the current triangulation (nothing changed since): c.point
-  // becomes a new vertex (appended to points()). Outcome Inserted.
+  // becomes a new vertex (appended to points()). Outcome Inserted; .tet as below.
   InsertResult commit(const Cavity& c);
-  // The same for a point already added as vertex v (point(v) == c.point).
-  InsertResult commit(const Cavity& c, VertexId v);
+  // The same for a point already added as vertex v (point(v) == c.point). Returns a new
+  // tet incident to v (a finite one when there is one), which is also last_tet().
+  TetId commit(const Cavity& c, VertexId v);
   // Locate + cavity + commit, walking from `hint` (kNoTet: last_tet()). Inserted, or
   // Duplicate (then nothing changes, and the point is not added).
   InsertResult insert(const Point& p, TetId hint = kNoTet);
