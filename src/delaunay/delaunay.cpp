@@ -1,9 +1,8 @@
 // Delaunay: the first tet, and insertion as locate + cavity + commit (delaunay.hpp).
 #include "delaunay/delaunay.hpp"
 
-#include <stdexcept>
-
 #include <cassert>
+#include <stdexcept>
 #include <utility>
 
 #include "geom/predicates.hpp"

@@ -77,7 +77,9 @@ class Delaunay {
   std::size_t count_finite_tets() const;
 
   // The first tet, from four points with orient3d(a,b,c,d) != 0 (either sign: it is
-  // reordered to be positive), and its four ghost tets. Precondition: empty().
+  // reordered to be positive), and its four ghost tets. Precondition: empty(). Four
+  // coplanar points throw std::invalid_argument (always checked: a flat first tet would
+  // corrupt every later step).
   void init(VertexId a, VertexId b, VertexId c, VertexId d);
 
   // ---- insertion ---------------------------------------------------------------------
