@@ -16,10 +16,10 @@ void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const P
   if (mark_.size() < s.slots()) {
     mark_.reserve(s.slots() + s.slots() / 2 + 64);
     advise_huge_pages(mark_.data(), mark_.capacity());
-    mark_.resize(mark_.capacity(), kUnseen);
+    mark_.resize(mark_.capacity(), Mark::Unseen);
   }
   assert(in_conflict(s, pts, seed, p));
-  mark_[seed] = kInside;
+  mark_[seed] = Mark::Inside;
   out.conflict.push_back(seed);
   // out.conflict doubles as the BFS queue: entries before i have been expanded.
   // Prefetching: a tet's four neighbours are requested from memory as soon as the tet
@@ -31,29 +31,29 @@ void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const P
     // Request the points of the neighbours still to be tested before testing any.
     for (int f = 0; f < 4; ++f) {
       const TetId u = s.neighbour(t, f);
-      if (mark_[u] != kUnseen || s.is_ghost(u)) continue;
+      if (mark_[u] != Mark::Unseen || s.is_ghost(u)) continue;
       const VertexId* w = s.vertices(u);
       for (int k = 0; k < 4; ++k) __builtin_prefetch(&pts[w[k]]);
     }
     for (int f = 0; f < 4; ++f) {
       const TetId u = s.neighbour(t, f);
-      const std::uint8_t m = mark_[u];
-      if (m == kInside) continue;
-      if (m == kUnseen) {
+      const Mark m = mark_[u];
+      if (m == Mark::Inside) continue;
+      if (m == Mark::Unseen) {
         if (in_conflict(s, pts, u, p)) {
-          mark_[u] = kInside;
+          mark_[u] = Mark::Inside;
           out.conflict.push_back(u);
           for (int g = 0; g < 4; ++g) s.prefetch(s.neighbour(u, g));
           continue;
         }
-        mark_[u] = kOutside;
+        mark_[u] = Mark::Outside;
         out.ring.push_back(u);
       }
       out.boundary.push_back(half_face(t, f));
     }
   }
-  for (TetId t : out.conflict) mark_[t] = kUnseen;
-  for (TetId t : out.ring) mark_[t] = kUnseen;
+  for (TetId t : out.conflict) mark_[t] = Mark::Unseen;
+  for (TetId t : out.ring) mark_[t] = Mark::Unseen;
 }
 
 }  // namespace pdr

@@ -49,8 +49,10 @@ class CavityBuilder {
              Cavity& out);
 
  private:
-  enum : std::uint8_t { kUnseen = 0, kInside = 1, kOutside = 2 };
-  std::vector<std::uint8_t> mark_;  // per tet slot; zero between calls
+  // A scoped enum, not a character type: stores to the marks then cannot alias every
+  // other object, so the compiler keeps the search's state in registers.
+  enum class Mark : std::uint8_t { Unseen = 0, Inside = 1, Outside = 2 };
+  std::vector<Mark> mark_;  // per tet slot; Unseen between calls
 };
 
 }  // namespace pdr
