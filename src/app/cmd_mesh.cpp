@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -172,14 +171,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
     code = kExitNotGuaranteed;
   }
 
-  const auto parent = std::filesystem::path(args.prefix).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  io::write_mesh(mesh, args.prefix, formats);
-  std::vector<std::string> written;
-  for (auto f : formats)
-    for (auto& p : io::output_paths(args.prefix, f)) written.push_back(p);
-  summary.set("written", written);
-  timer.lap("write");
+  write_outputs(mesh, args.prefix, formats, timer, summary);
 
   if (args.check) {
     check::Options co;
@@ -216,8 +208,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   } else {
     summary.set("check", "skipped (--no-check)");
   }
-  summary.set("seconds", timer.phases());
-  summary.set("peak_rss_bytes", peak_rss_bytes());
+  finish_summary(timer, summary);
   return code;
 }
 

@@ -2,6 +2,7 @@
 #include "app/pipeline.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "app/exit_codes.hpp"
 #include "check/check.hpp"
@@ -68,12 +69,7 @@ int triangulate_write_check(std::vector<Point> points, const std::string& source
   summary.set("tets_per_second", t_build > 0 ? static_cast<double>(mesh.tets.size()) / t_build
                                              : 0.0);
 
-  io::write_mesh(mesh, prefix, formats);
-  std::vector<std::string> written;
-  for (auto f : formats)
-    for (auto& p : io::output_paths(prefix, f)) written.push_back(p);
-  summary.set("written", written);
-  timer.lap("write");
+  write_outputs(mesh, prefix, formats, timer, summary);
 
   int code = kExitOk;
   if (check) {
@@ -93,9 +89,26 @@ int triangulate_write_check(std::vector<Point> points, const std::string& source
   } else {
     summary.set("check", "skipped (--no-check)");
   }
+  finish_summary(timer, summary);
+  return code;
+}
+
+void write_outputs(const MeshData& mesh, const std::string& prefix,
+                   const std::vector<io::MeshFormat>& formats, PhaseTimer& timer,
+                   Summary& summary) {
+  const auto parent = std::filesystem::path(prefix).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  io::write_mesh(mesh, prefix, formats);
+  std::vector<std::string> written;
+  for (auto f : formats)
+    for (auto& p : io::output_paths(prefix, f)) written.push_back(p);
+  summary.set("written", written);
+  timer.lap("write");
+}
+
+void finish_summary(const PhaseTimer& timer, Summary& summary) {
   summary.set("seconds", timer.phases());
   summary.set("peak_rss_bytes", peak_rss_bytes());
-  return code;
 }
 
 }  // namespace pdr::app

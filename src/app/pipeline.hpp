@@ -14,6 +14,15 @@ namespace pdr::app {
 
 std::vector<io::MeshFormat> parse_formats(const std::vector<std::string>& names);
 
+// Writes `mesh` atomically in every format (creating the prefix's folder), lists the files
+// in the summary's "written" and times the phase "write".
+void write_outputs(const MeshData& mesh, const std::string& prefix,
+                   const std::vector<io::MeshFormat>& formats, PhaseTimer& timer,
+                   Summary& summary);
+
+// The summary's closing entries: seconds per phase and the peak memory.
+void finish_summary(const PhaseTimer& timer, Summary& summary);
+
 // Returns an exit code: kExitOk, kExitViolations (the checker disagrees: a bug), or throws
 // InputError (`source` names the input) when the points span no tetrahedron.
 int triangulate_write_check(std::vector<Point> points, const std::string& source,

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "check/qvec.hpp"
 #include "geom/exact.hpp"
 
 namespace pdr::check {
@@ -16,15 +17,7 @@ Interval enclose(const mpq_class& q) {
   return {interval_detail::down(d), interval_detail::up(d)};
 }
 
-using Q = mpq_class;
-using QVec = std::array<Q, 3>;
-QVec qdiff(const Point& p, const Point& q) {
-  return {Q(p[0]) - Q(q[0]), Q(p[1]) - Q(q[1]), Q(p[2]) - Q(q[2])};
-}
-QVec qcross(const QVec& a, const QVec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Q qdot(const QVec& a, const QVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using namespace qvec;
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include <initializer_list>
 
 #include "check/interval.hpp"
+#include "check/qvec.hpp"
 #include "geom/exact.hpp"
 
 namespace pdr::check::signs {
@@ -116,15 +117,7 @@ std::optional<Sign> det3_int(const std::array<const Point*, 6>& p) {
   return sign_i(det3_i(e[0], e[1], e[2]));
 }
 
-using Q = mpq_class;
-using QVec = std::array<Q, 3>;
-QVec qdiff(const Point& p, const Point& q) {
-  return {Q(p[0]) - Q(q[0]), Q(p[1]) - Q(q[1]), Q(p[2]) - Q(q[2])};
-}
-QVec qcross(const QVec& a, const QVec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Q qdot(const QVec& a, const QVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using namespace qvec;
 Sign qsign(const Q& x) { return pdr::sign_of(sgn(x)); }
 
 }  // namespace

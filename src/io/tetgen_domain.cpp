@@ -36,6 +36,31 @@ std::vector<std::uint32_t> read_polygon(TextScanner& s, std::uint32_t base, std:
   return poly;
 }
 
+// The frame both domain formats share: points (or the sibling .node), the facet list, each
+// facet read by `read_facet(s, index, base, #points, facet)` from its first line on, then
+// the volume holes and regions.
+template <class ReadFacet>
+Plc read_facet_domain(const std::string& path, std::size_t min_bytes_per_facet,
+                      ReadFacet read_facet) {
+  const std::string bytes = read_file_bytes(path);
+  TextScanner s(bytes, path);
+  Plc plc;
+  plc.source = path;
+  const std::uint32_t base = read_domain_points(s, path, plc);
+  const std::size_t npts = plc.points.size();
+  const std::size_t nf = read_facet_header(s, min_bytes_per_facet);
+  plc.facets.reserve(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    s.require_line("facet " + std::to_string(f + 1) + " of " + std::to_string(nf));
+    PlcFacet facet;
+    facet.line = s.line();
+    read_facet(s, f, base, npts, facet);
+    plc.facets.push_back(std::move(facet));
+  }
+  read_holes_and_regions(s, plc);
+  return plc;
+}
+
 }  // namespace
 
 std::vector<Point> read_tetgen_points(const std::string& node_path) {
@@ -53,20 +78,10 @@ Plc read_tetgen_node_domain(const std::string& node_path) {
 }
 
 Plc read_tetgen_poly(const std::string& poly_path) {
-  const std::string bytes = read_file_bytes(poly_path);
-  TextScanner s(bytes, poly_path);
-  Plc plc;
-  plc.source = poly_path;
-  const std::uint32_t base = read_domain_points(s, poly_path, plc);
-  const std::size_t npts = plc.points.size();
-
   // A facet needs at least "1\n3 a b c\n".
-  const std::size_t nf = read_facet_header(s, 10);
-  plc.facets.reserve(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    s.require_line("facet " + std::to_string(f + 1) + " of " + std::to_string(nf));
-    PlcFacet facet;
-    facet.line = s.line();
+  return read_facet_domain(poly_path, 10, [](TextScanner& s, std::size_t f,
+                                             std::uint32_t base, std::size_t npts,
+                                             PlcFacet& facet) {
     const std::size_t npoly = s.count("the number of polygons", 4);
     const std::size_t nholes = s.has_token() ? s.count("the number of facet holes", 8) : 0;
     if (s.has_token()) facet.marker = s.number<int>("the facet boundary marker");
@@ -80,35 +95,17 @@ Plc read_tetgen_poly(const std::string& poly_path) {
     facet.holes.reserve(nholes);
     for (std::size_t h = 0; h < nholes; ++h) {
       s.require_line("hole " + std::to_string(h + 1) + " of facet " + std::to_string(f + 1));
-      (void)s.number<std::int64_t>("the facet hole index");
-      Point p;
-      p[0] = s.number<double>("the facet hole's x coordinate");
-      p[1] = s.number<double>("the facet hole's y coordinate");
-      p[2] = s.number<double>("the facet hole's z coordinate");
+      const Point p = read_indexed_point(s, "facet hole");
       s.end_line("the facet hole's coordinates");
       facet.holes.push_back(p);
     }
-    plc.facets.push_back(std::move(facet));
-  }
-  read_holes_and_regions(s, plc);
-  return plc;
+  });
 }
 
 Plc read_tetgen_smesh(const std::string& smesh_path) {
-  const std::string bytes = read_file_bytes(smesh_path);
-  TextScanner s(bytes, smesh_path);
-  Plc plc;
-  plc.source = smesh_path;
-  const std::uint32_t base = read_domain_points(s, smesh_path, plc);
-  const std::size_t npts = plc.points.size();
-
   // A facet line holds at least "1 a\n".
-  const std::size_t nf = read_facet_header(s, 4);
-  plc.facets.reserve(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    s.require_line("facet " + std::to_string(f + 1) + " of " + std::to_string(nf));
-    PlcFacet facet;
-    facet.line = s.line();
+  return read_facet_domain(smesh_path, 4, [](TextScanner& s, std::size_t, std::uint32_t base,
+                                             std::size_t npts, PlcFacet& facet) {
     const std::size_t nc = s.count("the number of facet corners", 2);
     if (nc == 0) s.fail("a facet needs at least one corner; remove the empty facet");
     std::vector<std::uint32_t> poly;
@@ -119,10 +116,7 @@ Plc read_tetgen_smesh(const std::string& smesh_path) {
     if (s.has_token()) facet.marker = s.number<int>("the facet boundary marker");
     s.end_line("the facet's corners and marker");
     facet.polygons.push_back(std::move(poly));
-    plc.facets.push_back(std::move(facet));
-  }
-  read_holes_and_regions(s, plc);
-  return plc;
+  });
 }
 
 }  // namespace pdr::io

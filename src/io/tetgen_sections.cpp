@@ -75,6 +75,15 @@ std::uint32_t to_index(TextScanner& s, std::int64_t index, std::uint32_t base, s
   return static_cast<std::uint32_t>(i);
 }
 
+Point read_indexed_point(TextScanner& s, const std::string& what) {
+  (void)s.number<std::int64_t>("the " + what + " index");
+  Point p;
+  p[0] = s.number<double>("the " + what + "'s x coordinate");
+  p[1] = s.number<double>("the " + what + "'s y coordinate");
+  p[2] = s.number<double>("the " + what + "'s z coordinate");
+  return p;
+}
+
 void read_holes_and_regions(TextScanner& s, Plc& plc) {
   if (!s.next_line()) return;  // no hole list
   const std::size_t nh = s.count("the number of volume holes", 8);
@@ -83,11 +92,7 @@ void read_holes_and_regions(TextScanner& s, Plc& plc) {
   plc.hole_lines.reserve(nh);
   for (std::size_t i = 0; i < nh; ++i) {
     s.require_line("volume hole " + std::to_string(i + 1) + " of " + std::to_string(nh));
-    (void)s.number<std::int64_t>("the hole index");
-    Point p;
-    p[0] = s.number<double>("the hole's x coordinate");
-    p[1] = s.number<double>("the hole's y coordinate");
-    p[2] = s.number<double>("the hole's z coordinate");
+    const Point p = read_indexed_point(s, "hole");
     s.end_line("the hole's coordinates");
     plc.holes.push_back(p);
     plc.hole_lines.push_back(s.line());
@@ -98,11 +103,8 @@ void read_holes_and_regions(TextScanner& s, Plc& plc) {
   plc.regions.reserve(nr);
   for (std::size_t i = 0; i < nr; ++i) {
     s.require_line("region " + std::to_string(i + 1) + " of " + std::to_string(nr));
-    (void)s.number<std::int64_t>("the region index");
     PlcRegion r;
-    r.point[0] = s.number<double>("the region's x coordinate");
-    r.point[1] = s.number<double>("the region's y coordinate");
-    r.point[2] = s.number<double>("the region's z coordinate");
+    r.point = read_indexed_point(s, "region");
     r.attribute = s.number<double>("the region attribute");
     if (s.has_token()) r.max_volume = s.number<double>("the region's volume constraint");
     s.end_line("the region's volume constraint");

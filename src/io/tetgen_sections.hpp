@@ -33,6 +33,10 @@ std::uint32_t to_index(TextScanner& s, std::int64_t index, std::uint32_t base, s
 
 // Reads "<#holes>" + hole lines, then the optional "<#regions>" + region lines, into plc.
 // Both lists may be missing at the end of the file.
+// Reads "<index> <x> <y> <z>" of a `what` ("hole", "region", "facet hole"); the index
+// is ignored, the line is not ended (a region has more fields).
+Point read_indexed_point(TextScanner& s, const std::string& what);
+
 void read_holes_and_regions(TextScanner& s, Plc& plc);
 
 // The points of a .poly/.smesh: its own node section, or the sibling .node file when that
