@@ -1,0 +1,211 @@
+// bench_mesh: pdr's quality mesher against TetGen 1.5 on the same domains, in the same run.
+//
+// For each case (a .poly domain and a volume bound V chosen so that both produce about a
+// million tets) it runs, each as its own child process:
+//   pdr     pdr mesh D.poly -o DIR/pdr/D --ratio 2 --max-volume V --no-check --formats node
+//   TetGen  tetgen -pq2.0aV -Q DIR/tetgen/D.poly     (writes D.1.node/.ele/.face)
+//   check   pdr check DIR/pdr/D --domain D.poly --ratio 2   (separately, so that the exact
+//           check's time and memory are reported on their own line, not in pdr's figures)
+// Both meshers write comparable output (TetGen's .node/.ele/.face). Per run: wall seconds
+// (steady_clock around fork..wait4), CPU seconds (user + system of the child, from wait4's
+// rusage) and peak RSS (its ru_maxrss: the whole process, input and output included, for
+// both alike). Then the bench reads both meshes with pdr's reader and computes, the same
+// way for both, the tet count, the largest radius-edge ratio (double, display) and the
+// number of tets with ratio >= 2 decided exactly (refine/refine_quality.hpp).
+//
+// Usage: bench_mesh [--pdr PATH] [--tetgen PATH] [--data DIR] [--runs N] [--no-check]
+//                   [--keep] [CASE.poly:V ...]
+// Default cases: cube-in-cube.poly and tee.poly at about 1M tets (see kDefaultCases).
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/mesh_io.hpp"
+#include "refine/refine_quality.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+#ifndef PDR_BENCH_PDR
+#define PDR_BENCH_PDR "pdr"
+#endif
+#ifndef PDR_BENCH_TETGEN
+#define PDR_BENCH_TETGEN "tetgen"
+#endif
+#ifndef PDR_BENCH_DATA
+#define PDR_BENCH_DATA "data"
+#endif
+
+struct Case {
+  std::string poly;  // file name under the data directory, or a path
+  std::string volume;  // V, as text (passed to both meshers verbatim)
+};
+
+// About 1M tets for both meshers (their counts differ by a few percent; compare tets/s).
+const Case kDefaultCases[] = {{"cube-in-cube.poly", "0.002"}, {"tee.poly", "0.00125"}};
+
+struct Run {
+  double wall = 0, cpu = 0;
+  std::uint64_t peak = 0;  // bytes
+  int exit_code = -1;
+};
+
+using Clock = std::chrono::steady_clock;
+
+// Runs argv[0] with argv, stdout and stderr to `log`; the child's own rusage from wait4.
+Run run_child(const std::vector<std::string>& argv, const fs::path& log) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  Run r;
+  std::fflush(nullptr);  // else the child's freopen flushes our buffered lines a second time
+  const auto t0 = Clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) return r;
+  if (pid == 0) {
+    if (!freopen(log.c_str(), "w", stdout) || !freopen(log.c_str(), "a", stderr)) _exit(126);
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  int status = 0;
+  rusage ru{};
+  if (wait4(pid, &status, 0, &ru) != pid) return r;
+  r.wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  r.cpu = double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+          1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+  r.peak = static_cast<std::uint64_t>(ru.ru_maxrss) * 1024;  // Linux: KiB
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
+
+struct Quality {
+  std::size_t tets = 0;
+  double max_ratio = 0;     // display
+  std::size_t skinny = 0;   // ratio >= 2, exact
+  bool read = false;
+};
+
+Quality measure(const std::string& prefix) {
+  Quality q;
+  try {
+    const pdr::MeshData m = pdr::io::read_mesh(prefix);
+    q.tets = m.tets.size();
+    for (const auto& t : m.tets) {
+      const pdr::Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]],
+                       &d = m.points[t[3]];
+      q.max_ratio = std::max(q.max_ratio, pdr::refine::ratio_of(a, b, c, d));
+      if (pdr::refine::ratio_at_least(a, b, c, d, 2.0)) ++q.skinny;
+    }
+    q.read = true;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_mesh: cannot read %s: %s\n", prefix.c_str(), e.what());
+  }
+  return q;
+}
+
+void print(const char* name, const Run& r, const Quality& q) {
+  const double n = double(q.tets);
+  std::printf("  %-7s %9zu tets %7.2f s wall %7.2f s cpu %9.0f tets/s wall %9.0f tets/s cpu "
+              "%7.1f MiB peak %6.1f B/tet  max ratio %.3f, %zu >= 2 (exact)  exit %d\n",
+              name, q.tets, r.wall, r.cpu, n / r.wall, n / r.cpu, double(r.peak) / 1048576.0,
+              double(r.peak) / n, q.max_ratio, q.skinny, r.exit_code);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string pdr = PDR_BENCH_PDR, tetgen = PDR_BENCH_TETGEN;
+  fs::path data = PDR_BENCH_DATA;
+  int runs = 1;
+  bool check = true, keep = false;
+  std::vector<Case> cases;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "bench_mesh: %s needs a value\n", a.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--pdr") pdr = next();
+    else if (a == "--tetgen") tetgen = next();
+    else if (a == "--data") data = next();
+    else if (a == "--runs") runs = std::atoi(next().c_str());
+    else if (a == "--no-check") check = false;
+    else if (a == "--keep") keep = true;
+    else if (const auto colon = a.rfind(':'); colon != std::string::npos && colon > 0)
+      cases.push_back({a.substr(0, colon), a.substr(colon + 1)});
+    else {
+      std::fprintf(stderr,
+                   "usage: bench_mesh [--pdr PATH] [--tetgen PATH] [--data DIR] [--runs N] "
+                   "[--no-check] [--keep] [CASE.poly:V ...]\n");
+      return 2;
+    }
+  }
+  if (cases.empty()) cases.assign(std::begin(kDefaultCases), std::end(kDefaultCases));
+
+  char tmpl[] = "/tmp/bench_mesh.XXXXXX";
+  if (!mkdtemp(tmpl)) {
+    std::perror("bench_mesh: mkdtemp");
+    return 1;
+  }
+  const fs::path dir = tmpl;
+  fs::create_directories(dir / "pdr");
+  fs::create_directories(dir / "tetgen");
+  std::printf("pdr mesh (--ratio 2) vs TetGen (-pq2.0a<V>), each a child process; peak = "
+              "max RSS of the process; B/tet = peak / tets\n");
+  int status = 0;
+  for (const Case& c : cases) {
+    const fs::path poly = fs::path(c.poly).is_absolute() || fs::exists(c.poly)
+                              ? fs::path(c.poly)
+                              : data / c.poly;
+    const std::string stem = poly.stem().string();
+    // TetGen writes next to its input: give it its own copy.
+    const fs::path tpoly = dir / "tetgen" / poly.filename();
+    fs::copy_file(poly, tpoly, fs::copy_options::overwrite_existing);
+    const std::string pprefix = (dir / "pdr" / stem).string();
+    const std::string tprefix = (dir / "tetgen" / (stem + ".1")).string();
+    for (int run = 0; run < runs; ++run) {
+      std::printf("%s, V = %s%s\n", poly.filename().c_str(), c.volume.c_str(),
+                  runs > 1 ? (" (run " + std::to_string(run + 1) + ")").c_str() : "");
+      const Run p = run_child({pdr, "mesh", poly.string(), "-o", pprefix, "--ratio", "2",
+                               "--max-volume", c.volume, "--no-check", "--formats", "node"},
+                              dir / "pdr.log");
+      const Quality pq = measure(pprefix);
+      const Run t = run_child({tetgen, "-pq2.0a" + c.volume, "-Q", tpoly.string()},
+                              dir / "tetgen.log");
+      const Quality tq = measure(tprefix);
+      print("pdr", p, pq);
+      print("TetGen", t, tq);
+      if (pq.read && tq.read)
+        std::printf("  pdr/TetGen: speed %.2fx wall, %.2fx cpu (tets/s); memory %.2fx "
+                    "(B/tet)\n",
+                    (double(pq.tets) / p.wall) / (double(tq.tets) / t.wall),
+                    (double(pq.tets) / p.cpu) / (double(tq.tets) / t.cpu),
+                    (double(p.peak) / double(pq.tets)) / (double(t.peak) / double(tq.tets)));
+      if (check && pq.read) {
+        const Run k = run_child({pdr, "check", pprefix, "--domain", poly.string(), "--ratio",
+                                 "2"},
+                                dir / "check.log");
+        std::printf("  check   pdr check of pdr's mesh: %.2f s wall %.2f s cpu %.1f MiB "
+                    "peak, exit %d (%s)\n",
+                    k.wall, k.cpu, double(k.peak) / 1048576.0, k.exit_code,
+                    k.exit_code == 0 ? "pass" : "see check.log");
+      }
+      if (!pq.read || !tq.read || (p.exit_code != 0 && p.exit_code != 3) || t.exit_code != 0)
+        status = 1;
+    }
+  }
+  if (keep) std::printf("outputs kept in %s\n", dir.c_str());
+  else fs::remove_all(dir);
+  return status;
+}
