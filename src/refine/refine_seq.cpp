@@ -6,13 +6,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include "geom/construct.hpp"
 #include "geom/encroach.hpp"
 #include "mesh/tables.hpp"
 #include "refine/refine_audit.hpp"
+#include "refine/refine_guard.hpp"
 #include "refine/refine_quality.hpp"
+#include "refine/refine_split.hpp"
 #include "refine/surface_insert.hpp"
 #include "refine/surface_split.hpp"
 
@@ -39,23 +43,36 @@ class Refiner {
     res_.stats.vertex_cap = o_.max_vertices != 0 ? o_.max_vertices : derived_cap();
     res_.stats.h = std::numeric_limits<double>::infinity();
     const TetStore& s = m_.dt.store();
+    if (!o_.admissible) start_guards();
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
-    while (head_ < queue_.size()) {
+    for (;;) {
+      if (!enc_.subsegments.empty()) {
+        const Encroached e = enc_.subsegments.back();
+        enc_.subsegments.pop_back();
+        if (!still_subsegment(m_.surf, e)) continue;
+        if (at_cap()) break;
+        ++res_.stats.encroached_splits;
+        if (auto why = split(e.id, hint(e.tet))) unsplit(std::move(*why));
+        continue;
+      }
+      if (!enc_.subfacets.empty()) {
+        const Encroached e = enc_.subfacets.back();
+        enc_.subfacets.pop_back();
+        if (!still_subfacet(m_.surf, e)) continue;
+        if (at_cap()) break;
+        ++res_.stats.encroached_splits;
+        refine_subfacet(e.id, hint(e.tet), kNoTet);
+        continue;
+      }
+      if (head_ >= queue_.size()) break;
       const Entry e = queue_[head_++];
       if (head_ > 4096 && head_ * 2 > queue_.size()) {
         queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head_));
         head_ = 0;
       }
       if (!same(e)) continue;
-      if (m_.dt.num_points() >= res_.stats.vertex_cap) {
-        res_.stop_reason = "refine.cap: " + std::to_string(m_.dt.num_points()) +
-                           " vertices reached the cap of " +
-                           std::to_string(res_.stats.vertex_cap) +
-                           " (derived from the input size, its bounding box, d, B and the "
-                           "size bounds); the domain is probably outside the theory";
-        break;
-      }
+      if (at_cap()) break;
       refine_tet(e.t);
       if (o_.progress && (++steps_ & 0x3FFF) == 0)
         std::fprintf(stderr, "\rrefine: %zu vertices, %zu queued   ", m_.dt.num_points(),
@@ -77,22 +94,62 @@ class Refiner {
   std::vector<TetId> star_;
   std::vector<std::uint8_t> mark_;
   std::vector<std::pair<std::array<VertexId, 4>, std::string>> refused_;
+  SplitGuard guard_;     // empty for admissible domains (midpoints)
+  EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
 
   const Point& pt(VertexId v) const { return m_.dt.point(v); }
 
-  std::size_t derived_cap() const {
-    // A resource limit, not a geometric decision: 1000 + 64 n + 16 (box volume) / u^3 with
-    // u the smallest of d/2, L/2 and cbrt(V) given.
+  double box_volume() const {
     const auto& pts = m_.dt.points();
     Point lo = pts[0], hi = pts[0];
     for (const Point& p : pts)
       for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    const double vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-    double u = o_.d > 0 && std::isfinite(o_.d) ? o_.d / 2 : std::cbrt(vol) / 8;
+    return (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  }
+  // The resolution u asked for: the smallest of d/2, L/2 and cbrt(V) given.
+  double resolution() const {
+    double u = o_.d > 0 && std::isfinite(o_.d) ? o_.d / 2 : std::cbrt(box_volume()) / 8;
     if (o_.size) u = std::min(u, *o_.size / 2);
     if (o_.max_volume) u = std::min(u, std::cbrt(*o_.max_volume));
-    const double cap = 1000.0 + 64.0 * static_cast<double>(pts.size()) + 16.0 * vol / (u * u * u);
+    return u;
+  }
+  std::size_t derived_cap() const {
+    // A resource limit, not a geometric decision: 1000 + 64 n + 16 (box volume) / u^3.
+    const double u = resolution();
+    const double cap = 1000.0 + 64.0 * static_cast<double>(m_.dt.num_points()) +
+                       16.0 * box_volume() / (u * u * u);
     return static_cast<std::size_t>(std::min(cap, 2.0e9));
+  }
+  bool at_cap() {
+    if (m_.dt.num_points() < res_.stats.vertex_cap) return false;
+    res_.stop_reason = "refine.cap: " + std::to_string(m_.dt.num_points()) +
+                       " vertices reached the cap of " + std::to_string(res_.stats.vertex_cap) +
+                       " (derived from the input size, its bounding box, d, B and the size "
+                       "bounds); the domain is probably outside the theory";
+    return true;
+  }
+
+  // Inadmissible domains: shells and protected lengths at the acute vertices (every input
+  // vertex when the caller gave none), and the encroachment pre-pass over T_o.
+  void start_guards() {
+    std::vector<std::uint32_t> acute = o_.acute_vertices;
+    if (acute.empty())
+      for (std::uint32_t v = 0; v < m_.surf.vertex_count(); ++v)
+        if (m_.surf.home(v).kind == HomeKind::Input) acute.push_back(v);
+    guard_ = SplitGuard(m_.surf, acute, resolution() / 64);
+    const TetStore& s = m_.dt.store();
+    std::vector<TetId> all;
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t) && !s.is_ghost(t)) all.push_back(t);
+    find_encroached(m_, all, enc_);
+  }
+  TetId hint(TetId t) const {
+    const TetStore& s = m_.dt.store();
+    return t < s.slots() && s.is_alive(t) ? t : kNoTet;
+  }
+  // An encroached element the guards would not split.
+  void unsplit(std::string why) {
+    if (res_.stats.encroached_refused++ < 50) res_.unsplit.push_back(std::move(why));
   }
 
   std::array<VertexId, 4> verts(TetId t) const {
@@ -192,45 +249,64 @@ class Refiner {
       }
     }
     queue_star();
+    if (guard_.active()) find_encroached(m_, star_, enc_);
   }
 
-  void split(std::uint32_t sub, TetId hint) {
+  // Fig. 2 Refine(s) (refine_split.hpp: where); the reason when the guard refuses.
+  std::optional<std::string> split(std::uint32_t sub, TetId hint) {
+    const SplitGuard::Plan where = guard_.plan(m_.surf, sub);
+    if (!where.ok) return where.reason;
     const Subsegment& x = m_.surf.subsegment(sub);
     const Point a = m_.surf.point(x.v[0]), b = m_.surf.point(x.v[1]);
-    double l2 = 0;
-    for (int k = 0; k < 3; ++k) l2 += (a[k] - b[k]) * (a[k] - b[k]);
-    res_.stats.h = std::min(res_.stats.h, std::sqrt(l2) / 2);
-    const SplitResult r = split_subsegment(m_.surf, sub);
+    double piece2 = std::numeric_limits<double>::infinity();
+    for (const Point& e : {a, b}) {
+      double l2 = 0;
+      for (int k = 0; k < 3; ++k) l2 += (e[k] - where.p[k]) * (e[k] - where.p[k]);
+      piece2 = std::min(piece2, l2);
+    }
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(piece2));
+    const std::string name = m_.surf.segment_name(x.segment);
+    const SplitResult r = split_subsegment_at(m_.surf, sub, where.p);
     const Point p = m_.surf.point(r.vertex);
     bool outside = false;
     if (!plan(p, hint, cav_, outside))
-      throw RefineError("refine.split: the midpoint " + fmt(p) + " of " +
-                        m_.surf.segment_name(x.segment) + " is already a vertex");
+      throw RefineError("refine.split: the split point " + fmt(p) + " of " + name +
+                        " is already a vertex");
     const VertexId v = commit_point(m_, cav_, r.vertex, star_, mark_);
     ++res_.stats.subsegment_splits;
-    after_insert(v, "subsegment", l2 / 4);
+    after_insert(v, "subsegment", piece2);
+    return std::nullopt;
   }
 
-  // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t.
-  void refine_subfacet(std::uint32_t f, TetId t) {
+  // Tet t cannot be refined (kNoTet: an encroached element could not be split).
+  void give_up(TetId t, std::string why) {
+    if (t == kNoTet)
+      unsplit(std::move(why));
+    else
+      refuse(t, std::move(why));
+  }
+
+  // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t (kNoTet: f is encroached);
+  // `hint` locates its circumcenter.
+  void refine_subfacet(std::uint32_t f, TetId hint, TetId t) {
     const FacetCavity fc = plan_circumcenter(m_.surf, f);
     if (fc.status == CavityStatus::Encroaches && !fc.encroached.empty()) {
-      split(fc.encroached.front(), t);
+      if (auto why = split(fc.encroached.front(), hint)) give_up(t, std::move(*why));
       return;
     }
     if (fc.status != CavityStatus::Ok) {
-      refuse(t, std::string("refine.subfacet: the circumcenter of subfacet ") +
-                    std::to_string(f) + " of " + m_.surf.facet_name(fc.facet) +
-                    " cannot be inserted (" + cavity_status_name(fc.status) + ")");
+      give_up(t, std::string("refine.subfacet: the circumcenter of subfacet ") +
+                     std::to_string(f) + " of " + m_.surf.facet_name(fc.facet) +
+                     " cannot be inserted (" + cavity_status_name(fc.status) + ")");
       return;
     }
     bool outside = false;
-    if (!plan(fc.p, t, cav2_, outside)) {
-      refuse(t, "refine.subfacet: circumcenter " + fmt(fc.p) + " is already a vertex");
+    if (!plan(fc.p, hint, cav2_, outside)) {
+      give_up(t, "refine.subfacet: circumcenter " + fmt(fc.p) + " is already a vertex");
       return;
     }
     if (const auto s = encroached_subsegment(cav2_, fc.p)) {
-      split(*s, t);
+      if (auto why = split(*s, hint)) give_up(t, std::move(*why));
       return;
     }
     const Subfacet& x = m_.surf.subfacet(f);
@@ -270,11 +346,11 @@ class Refiner {
       return;
     }
     if (const auto s = encroached_subsegment(cav_, p)) {
-      split(*s, t);
+      if (auto why = split(*s, t)) refuse(t, std::move(*why));
       return;
     }
     if (const auto f = encroached_subfacet(cav_, p)) {
-      refine_subfacet(*f, t);
+      refine_subfacet(*f, t, t);
       return;
     }
     if (outside) {

@@ -50,7 +50,11 @@ struct RefineOptions {
   bool progress = false;              // a progress line on stderr
   bool admissible = true;             // false: the audit records its first failure
                                       // (audit_note) instead of stopping: Lemma 1 is
-                                      // not expected to hold outside the theory
+                                      // not expected to hold outside the theory; and
+                                      // the guards below are on
+  std::vector<std::uint32_t> acute_vertices;  // inadmissible: acute_vertices(report)
+                                              // (refine_split.hpp); empty: every input
+                                              // vertex
 };
 
 struct Leftover {
@@ -67,6 +71,8 @@ struct RefineStats {
   std::size_t subsegment_splits = 0;
   std::size_t refused = 0;
   std::size_t vertex_cap = 0;
+  std::size_t encroached_splits = 0;    // elements the encroachment guard refined
+  std::size_t encroached_refused = 0;   // ... and those it could not (unsplit)
   double h = 0;  // the audit's h: min over refinements of (l/2, R_f/√2, R_t/2)
   std::size_t audit_failures = 0;  // inadmissible domains only (else the first throws)
   std::string audit_note;          // the first of them
@@ -75,6 +81,7 @@ struct RefineStats {
 struct RefineResult {
   RefineStats stats;
   std::vector<Leftover> leftovers;  // inside tets with ratio >= B at the end
+  std::vector<std::string> unsplit;  // why encroached elements were not refined (first 50)
   std::string stop_reason;          // empty unless the vertex cap stopped the loop
 };
 

@@ -9,9 +9,13 @@
 namespace pdr::refine {
 
 SplitResult split_subsegment(SurfaceMesh& m, std::uint32_t s) {
+  const Subsegment& g = m.subsegment(s);
+  return split_subsegment_at(m, s, construct::midpoint(m.point(g.v[0]), m.point(g.v[1])));
+}
+
+SplitResult split_subsegment_at(SurfaceMesh& m, std::uint32_t s, const Point& p) {
   const Subsegment g = m.subsegment(s);
   const std::uint32_t u = g.v[0], w = g.v[1];
-  const Point p = construct::midpoint(m.point(u), m.point(w));
   std::vector<FacetCavity> cavities;
   for (const std::uint32_t f : m.segments[g.segment].facets) {
     const std::vector<std::uint32_t> seeds = m.subfacets_on_edge(f, u, w);
@@ -21,7 +25,7 @@ SplitResult split_subsegment(SurfaceMesh& m, std::uint32_t s) {
                          " is not an edge of " + m.facet_name(f));
     cavities.push_back(build_facet_cavity(m, f, p, seeds, std::array{u, w}));
     if (cavities.back().status != CavityStatus::Ok)
-      throw SurfaceError("surface.split: the midpoint of subsegment (" + std::to_string(u) +
+      throw SurfaceError("surface.split: the split point of subsegment (" + std::to_string(u) +
                          ", " + std::to_string(w) + ") of " + m.segment_name(g.segment) +
                          " cannot be inserted in " + m.facet_name(f) + ": cavity " +
                          cavity_status_name(cavities.back().status));

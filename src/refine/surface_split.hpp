@@ -12,6 +12,9 @@
 // measures exactly) nothing changes and SurfaceError names the facet.
 // No encroachment test: paper §2.1, "the 90° condition and d make midpoints safe"; the
 // cavities still report the subsegments m encroaches (for inadmissible domains).
+// split_subsegment_at does the same at a caller's point p (the concentric-shell split near
+// an acute input vertex, refine_split.hpp). Precondition: p lies on the open subsegment up
+// to the rounding of its construction (a point a + t (b - a) in double, like the midpoint).
 #pragma once
 
 #include <cstdint>
@@ -29,5 +32,6 @@ struct SplitResult {
 };
 
 SplitResult split_subsegment(SurfaceMesh& m, std::uint32_t s);
+SplitResult split_subsegment_at(SurfaceMesh& m, std::uint32_t s, const Point& p);
 
 }  // namespace pdr::refine
