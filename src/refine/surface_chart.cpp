@@ -11,6 +11,8 @@ FacetChart make_chart(const FacetPlane& plane, const std::vector<Point>& pts) {
   const Point& t1 = pts[plane.triple[1]];
   const Point& t2 = pts[plane.triple[2]];
   ch.origin = t0;
+  ch.t1 = t1;
+  ch.t2 = t2;
   const Point u{t1[0] - t0[0], t1[1] - t0[1], t1[2] - t0[2]};
   const Point v{t2[0] - t0[0], t2[1] - t0[1], t2[2] - t0[2]};
   ch.normal = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};

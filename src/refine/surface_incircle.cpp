@@ -1,22 +1,26 @@
-// The facet in-circle test (paper §2.1 step 2, §3 subfacet cavities): the lifted chart
-// determinant of surface_chart.hpp, evaluated exactly, with symbolic perturbation.
+// The facet in-circle test (paper §2.1 step 2, §3 subfacet cavities): the plane-centred
+// lifted determinant of surface_chart.hpp, evaluated exactly, with symbolic perturbation.
 //
-// Evaluation of the unperturbed sign, in three stages:
-//   1. Filter. With x_q, y_q the chart differences q - d, e_k = q_k - d_k and
-//      s_k = (q_k - t0_k) + (d_k - t0_k), the lift difference is w_q = sum_k e_k s_k and the
-//      determinant x_a (y_b w_c - y_c w_b) + x_b (y_c w_a - y_a w_c) + x_c (y_a w_b - y_b w_a).
-//      Each leaf difference is rounded once; the longest chain of roundings has 10
-//      operations, so |error| <= gamma_10 * (the same program on absolute values) (Higham,
-//      straight-line programs), below 11u of that bound as computed; we use 16u. Used only
-//      when every difference is 0 or in [2^-150, 2^150] (no underflow, no overflow in a
-//      product of four). Valid with or without fused multiply-add.
-//   2. Coplanar shortcut. If orient3d(a, b, c, d) == 0 and o = chart_orient(a, b, c) != 0,
-//      the sign is incircle3(a, b, c, d) * o (surface_chart.hpp: for coplanar points the
-//      lifted test is the 3D circle test); the adaptive kernel decides without GMP, which
-//      matters for cocircular grids (every test on them reaches this stage).
-//   3. GMP rationals, the same determinant with exact lifts.
-// Perturbation: the incircle_sos cofactor table (predicates.hpp) with chart orientations,
-// in the dominance order of the 3D points (lex-largest first), as incircle3_sos does.
+// Notation: t0, t1, t2 the facet's defining triple (exact doubles), e1 = t1 - t0,
+// e2 = t2 - t0 (exact differences), and for the rows q = a, b, c
+//     x_q = e1 . (q - d),   y_q = e2 . (q - d),   w_q = sum_k (q_k - d_k)((q_k - t0_k) + (d_k - t0_k))
+// (w_q = |q - t0|^2 - |d - t0|^2). The determinant is
+//     x_a (y_b w_c - y_c w_b) + x_b (y_c w_a - y_a w_c) + x_c (y_a w_b - y_b w_a).
+// Its sign is evaluated in three stages:
+//   1. Filter. Every leaf difference is rounded once and e1, e2 once; by Higham's bound
+//      for straight-line programs (a product adds the operands' counts plus one, a sum
+//      their maximum plus one) x, y carry gamma_5, w gamma_6, the determinant gamma_21
+//      times the same program on absolute values; that program is itself rounded
+//      (gamma_21 below it), so 32u of it as computed bounds the error. Used only when every
+//      difference is 0 or in [2^-150, 2^150] (no underflow or overflow in a product of six).
+//      Valid with or without fused multiply-add.
+//   2. Coplanar shortcut. If orient3d(a, b, c, d) == 0 and o = plane_orient(a, b, c) != 0,
+//      the sign is incircle3(a, b, c, d) * o: every sphere through a, b, c meets their plane
+//      in their circle (the adaptive kernel decides cocircular grids without GMP).
+//   3. GMP rationals, the same determinant with exact e1, e2 and lifts.
+// Perturbation: the incircle_sos cofactor table (predicates.hpp) with plane_orient as the
+// cofactors, in the dominance order of the 3D points (lex-largest first), as incircle3_sos
+// does: the perturbation of the lift |p - t0|^2 that insphere_sos applies in 3D.
 #include <gmpxx.h>
 
 #include <cmath>
@@ -28,47 +32,69 @@
 namespace pdr::refine {
 namespace {
 
+constexpr double kU = 0x1p-53;
+
 bool in_range(double x) {
   const double m = std::fabs(x);
   return m == 0 || (m >= 0x1p-150 && m <= 0x1p150);
 }
 
-// One row of the filter: chart differences, lift difference and its absolute bound.
+struct Frame {
+  Point e1, e2;  // rounded t1 - t0, t2 - t0
+  bool ok;
+};
+
+Frame frame(const FacetChart& ch) {
+  Frame f{};
+  f.ok = true;
+  for (int k = 0; k < 3; ++k) {
+    f.e1[k] = ch.t1[k] - ch.origin[k];
+    f.e2[k] = ch.t2[k] - ch.origin[k];
+    f.ok = f.ok && in_range(f.e1[k]) && in_range(f.e2[k]);
+  }
+  return f;
+}
+
+// One row of the filter: the plane coordinates and the lift difference of q against d,
+// with their absolute-value programs.
 struct Row {
   double x, y, w, xa, ya, wa;
   bool ok;
 };
 
-Row filter_row(const FacetChart& ch, const Point& q, const P2& Q, const Point& d, const P2& D) {
+Row filter_row(const FacetChart& ch, const Frame& fr, const Point& q, const Point& d) {
   Row r{};
-  r.x = Q[0] - D[0];
-  r.y = Q[1] - D[1];
-  r.ok = in_range(r.x) && in_range(r.y);
-  double w = 0, wa = 0;
+  r.ok = fr.ok;
   for (int k = 0; k < 3; ++k) {
     const double e = q[k] - d[k], sq = q[k] - ch.origin[k], sd = d[k] - ch.origin[k];
     r.ok = r.ok && in_range(e) && in_range(sq) && in_range(sd);
-    w += e * (sq + sd);
-    wa += std::fabs(e) * (std::fabs(sq) + std::fabs(sd));
+    r.x += fr.e1[k] * e;
+    r.xa += std::fabs(fr.e1[k]) * std::fabs(e);
+    r.y += fr.e2[k] * e;
+    r.ya += std::fabs(fr.e2[k]) * std::fabs(e);
+    r.w += e * (sq + sd);
+    r.wa += std::fabs(e) * (std::fabs(sq) + std::fabs(sd));
   }
-  r.w = w;
-  r.wa = wa;
-  r.xa = std::fabs(r.x);
-  r.ya = std::fabs(r.y);
   return r;
 }
 
+mpq_class dot_exact(const FacetChart& ch, const Point& t, const Point& q, const Point& d) {
+  mpq_class s = 0;
+  for (int k = 0; k < 3; ++k)
+    s += (mpq_class(t[k]) - ch.origin[k]) * (mpq_class(q[k]) - d[k]);
+  return s;
+}
+
 Sign raw_gmp(const FacetChart& ch, const Point* p[4]) {
-  const P2 D = ch(*p[3]);
+  const Point& d = *p[3];
   mpq_class x[3], y[3], w[3];
   for (int i = 0; i < 3; ++i) {
-    const P2 Q = ch(*p[i]);
-    x[i] = mpq_class(Q[0]) - D[0];
-    y[i] = mpq_class(Q[1]) - D[1];
+    x[i] = dot_exact(ch, ch.t1, *p[i], d);
+    y[i] = dot_exact(ch, ch.t2, *p[i], d);
     w[i] = 0;
     for (int k = 0; k < 3; ++k) {
       const mpq_class sq = mpq_class((*p[i])[k]) - ch.origin[k];
-      const mpq_class sd = mpq_class((*p[3])[k]) - ch.origin[k];
+      const mpq_class sd = mpq_class(d[k]) - ch.origin[k];
       w[i] += sq * sq - sd * sd;
     }
   }
@@ -79,23 +105,47 @@ Sign raw_gmp(const FacetChart& ch, const Point* p[4]) {
 
 }  // namespace
 
+Sign plane_orient(const FacetChart& ch, const Point& a, const Point& b, const Point& c) {
+  // det [e1.(b-a) e1.(c-a); e2.(b-a) e2.(c-a)]: entries gamma_5, products gamma_11, the
+  // difference gamma_12; 16u of the computed absolute program bounds the error.
+  const Frame fr = frame(ch);
+  bool ok = fr.ok;
+  double xb = 0, xc = 0, yb = 0, yc = 0, xba = 0, xca = 0, yba = 0, yca = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double u = b[k] - a[k], v = c[k] - a[k];
+    ok = ok && in_range(u) && in_range(v);
+    xb += fr.e1[k] * u, xba += std::fabs(fr.e1[k]) * std::fabs(u);
+    xc += fr.e1[k] * v, xca += std::fabs(fr.e1[k]) * std::fabs(v);
+    yb += fr.e2[k] * u, yba += std::fabs(fr.e2[k]) * std::fabs(u);
+    yc += fr.e2[k] * v, yca += std::fabs(fr.e2[k]) * std::fabs(v);
+  }
+  if (ok) {
+    const double det = xb * yc - xc * yb, bound = 16 * kU * (xba * yca + xca * yba);
+    if (det > bound) return Sign::Positive;
+    if (det < -bound) return Sign::Negative;
+  }
+  const mpq_class det = dot_exact(ch, ch.t1, b, a) * dot_exact(ch, ch.t2, c, a) -
+                        dot_exact(ch, ch.t1, c, a) * dot_exact(ch, ch.t2, b, a);
+  return sign_of(sgn(det));
+}
+
 Sign chart_incircle_raw(const FacetChart& ch, const Point& a, const Point& b, const Point& c,
                         const Point& d) {
-  const P2 A = ch(a), B = ch(b), C = ch(c), D = ch(d);
-  const Row ra = filter_row(ch, a, A, d, D), rb = filter_row(ch, b, B, d, D),
-            rc = filter_row(ch, c, C, d, D);
+  const Frame fr = frame(ch);
+  const Row ra = filter_row(ch, fr, a, d), rb = filter_row(ch, fr, b, d),
+            rc = filter_row(ch, fr, c, d);
   if (ra.ok && rb.ok && rc.ok) {
     const double det = ra.x * (rb.y * rc.w - rc.y * rb.w) + rb.x * (rc.y * ra.w - ra.y * rc.w) +
                        rc.x * (ra.y * rb.w - rb.y * ra.w);
     const double bar = ra.xa * (rb.ya * rc.wa + rc.ya * rb.wa) +
                        rb.xa * (rc.ya * ra.wa + ra.ya * rc.wa) +
                        rc.xa * (ra.ya * rb.wa + rb.ya * ra.wa);
-    const double bound = 16 * 0x1p-53 * bar;
+    const double bound = 32 * kU * bar;
     if (det > bound) return Sign::Positive;
     if (det < -bound) return Sign::Negative;
   }
   if (orient3d(a, b, c, d) == Sign::Zero) {
-    const Sign o = orient2d(A, B, C);
+    const Sign o = plane_orient(ch, a, b, c);
     if (o != Sign::Zero) return incircle3(a, b, c, d) * o;
   }
   const Point* p[4] = {&a, &b, &c, &d};
@@ -104,20 +154,22 @@ Sign chart_incircle_raw(const FacetChart& ch, const Point& a, const Point& b, co
 
 Sign chart_incircle(const FacetChart& ch, const Point& a, const Point& b, const Point& c,
                     const Point& d) {
-  const Sign s = chart_incircle_raw(ch, a, b, c, d);
-  if (s != Sign::Zero) return s;
-  const P2 A = ch(a), B = ch(b), C = ch(c), D = ch(d);
-  for (const int i : sos::dominance_order<4>({&a, &b, &c, &d})) {
-    Sign t = Sign::Zero;
-    switch (i) {
-      case 0: t = orient2d(B, C, D); break;
-      case 1: t = -orient2d(A, C, D); break;
-      case 2: t = orient2d(A, B, D); break;
-      default: t = -orient2d(A, B, C); break;
+  Sign s = chart_incircle_raw(ch, a, b, c, d);
+  if (s == Sign::Zero) {
+    for (const int i : sos::dominance_order<4>({&a, &b, &c, &d})) {
+      switch (i) {
+        case 0: s = plane_orient(ch, b, c, d); break;
+        case 1: s = -plane_orient(ch, a, c, d); break;
+        case 2: s = plane_orient(ch, a, b, d); break;
+        default: s = -plane_orient(ch, a, b, c); break;
+      }
+      if (s != Sign::Zero) break;
     }
-    if (t != Sign::Zero) return t;
   }
-  return Sign::Zero;
+  // s is "inside" relative to the orientation of a, b, c in the plane chart; the caller's
+  // orientation is the projection chart's (they differ only on near-degenerate triangles).
+  const Sign op = plane_orient(ch, a, b, c), oc = chart_orient(ch, a, b, c);
+  return op != Sign::Zero && oc != Sign::Zero && op != oc ? -s : s;
 }
 
 }  // namespace pdr::refine

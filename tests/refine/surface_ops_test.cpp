@@ -32,19 +32,21 @@ FacetChart chart_of(const Point& o, const Point& p1, const Point& p2) {
   return make_chart(pl, {o, p1, p2});
 }
 
+// The plane-centred lifted determinant of surface_chart.hpp in GMP: rows q - d for
+// q = a, b, c with columns e1.(q - d), e2.(q - d), |q - t0|^2 - |d - t0|^2.
 Sign raw_reference(const FacetChart& ch, const Point& a, const Point& b, const Point& c,
                    const Point& d) {
   const Point* p[3] = {&a, &b, &c};
-  const P2 D = ch(d);
   mpq_class x[3], y[3], w[3];
   for (int i = 0; i < 3; ++i) {
-    const P2 Q = ch(*p[i]);
-    x[i] = mpq_class(Q[0]) - D[0];
-    y[i] = mpq_class(Q[1]) - D[1];
-    w[i] = 0;
-    for (int k = 0; k < 3; ++k)
+    x[i] = y[i] = w[i] = 0;
+    for (int k = 0; k < 3; ++k) {
+      const mpq_class e = mpq_class((*p[i])[k]) - d[k];
+      x[i] += (mpq_class(ch.t1[k]) - ch.origin[k]) * e;
+      y[i] += (mpq_class(ch.t2[k]) - ch.origin[k]) * e;
       w[i] += (mpq_class((*p[i])[k]) - ch.origin[k]) * (mpq_class((*p[i])[k]) - ch.origin[k]) -
               (mpq_class(d[k]) - ch.origin[k]) * (mpq_class(d[k]) - ch.origin[k]);
+    }
   }
   const mpq_class det = x[0] * (y[1] * w[2] - y[2] * w[1]) - y[0] * (x[1] * w[2] - x[2] * w[1]) +
                         w[0] * (x[1] * y[2] - x[2] * y[1]);
