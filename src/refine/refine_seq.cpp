@@ -17,6 +17,7 @@
 #include "refine/refine_guard.hpp"
 #include "refine/refine_quality.hpp"
 #include "refine/refine_split.hpp"
+#include "refine/surface_flat.hpp"
 #include "refine/surface_insert.hpp"
 #include "refine/surface_split.hpp"
 
@@ -167,7 +168,7 @@ class Refiner {
     if (ratio_at_least(a, b, c, d, o_.ratio)) return true;
     if (o_.size && radius_above(a, b, c, d, *o_.size)) return true;
     if (o_.max_volume && volume_above(a, b, c, d, *o_.max_volume)) return true;
-    return false;
+    return flat_on_facet(m_, t).has_value();  // issue #3: surface_flat.hpp
   }
   void consider(TetId t) {
     if (bad(t)) queue_.push_back({t, verts(t)});
@@ -337,6 +338,10 @@ class Refiner {
   }
 
   void refine_tet(TetId t) {
+    if (const auto f = flat_on_facet(m_, t)) {  // a sliver on a facet: surface_flat.hpp
+      refine_subfacet(*f, t, t);
+      return;
+    }
     const VertexId* v = m_.dt.store().vertices(t);
     const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
     const Point p = construct::circumcenter(a, b, c, d);
