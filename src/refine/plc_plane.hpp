@@ -14,9 +14,12 @@
 //
 // The plane "as the kernel sees it" is the defining triple: three non-collinear input
 // vertices chosen well conditioned (t0 farthest from the centroid, t1 farthest from t0, t2
-// maximising the area of t0 t1 t2). Later stages that place vertices on the facet use
-// orient3d(t0, t1, t2, .) as the facet's plane and `projection` (drop the coordinate of the
-// largest normal component; `swap` makes t0 t1 t2 counter-clockwise) as its 2D chart.
+// maximising the area of t0 t1 t2). Later stages use orient3d(t0, t1, t2, .) as the
+// facet's plane, `projection` (drop the coordinate of the largest normal component; `swap`
+// makes t0 t1 t2 counter-clockwise) as its 2D chart, and spheres centred exactly on the
+// plane through t0, t1, t2 for the facet's in-circle test (surface_chart.hpp), so vertices
+// off the plane (within tolerance, or rounded constructions) are decided as the 3D
+// Delaunay tetrahedralization decides them.
 #pragma once
 
 #include <array>
