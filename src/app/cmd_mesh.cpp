@@ -114,9 +114,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   refine::DomainAnalysis an = refine::analyze(plc);
   summary.set("domain", plc.source);
   summary.set("admissible", an.report.admissible);
-  nlohmann::json viol = nlohmann::json::array();
-  for (const auto& v : refine::to_json(an.report)["violations"]) viol.push_back(v);
-  summary.set("admissibility_violations", viol);
+  const nlohmann::json report = refine::to_json(an.report);
+  summary.set("admissibility_violations", report.at("admissibility").at("violations"));
   summary.set("d", an.report.feature.d);
   timer.lap("analyze");
 
