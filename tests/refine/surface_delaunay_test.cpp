@@ -3,8 +3,9 @@
 // src/delaunay (insphere_sos), paper §2.1 step 3 "add the vertices in D_o by Delaunay
 // insertion" and property 1 "the facets appear as a union of subfacets in T_o".
 // Exactly planar axis-parallel domains (all constructed points exactly on their facets,
-// including cocircular grids) must conform fully; for tilted facets the count of missing
-// subfacets is checked on fixed inputs (the near-planar limitation of surface_chart.hpp).
+// including cocircular grids) must conform fully; so must tilted facets, whose subfacets
+// are restricted Delaunay faces (spheres centred on the facet's plane, surface_chart.hpp),
+// checked here on fixed inputs and in refine_tilted_test.cpp on random rotations.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -80,9 +81,9 @@ TEST(SurfaceDelaunay, CocircularGridConforms) {
 }
 
 TEST(SurfaceDelaunay, TiltedFacetsConformOnTheseInputs) {
-  // Not guaranteed in general (surface_chart.hpp, near-planar facets), but deterministic:
-  // these inputs, whose audit finds closed-ball violations by near-cocircular vertices a
-  // few ulps off their subfacets' planes, still have every subfacet in the 3D triangulation.
+  // Vertices a few ulps off their facets' planes (their audit finds closed-ball violations
+  // by near-cocircular vertices): every subfacet's plane-centred sphere is empty, so it is
+  // a face of the 3D triangulation (surface_chart.hpp, restricted Delaunay).
   for (const Plc& plc : {rotated_box(8, 6, 1), tumbled_box(8, 6, 1), tumbled_box(16, 16, 1)}) {
     const SurfaceInit init = init_surface(analyze(plc));
     EXPECT_EQ(missing_subfacets(init.mesh), 0u);
