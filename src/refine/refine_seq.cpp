@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
 #include <optional>
+#include <span>
 #include <sstream>
 
 #include "geom/construct.hpp"
@@ -74,7 +76,10 @@ class Refiner {
       }
       if (!same(e)) continue;
       if (at_cap()) break;
+      const std::size_t before = m_.dt.num_points();
       refine_tet(e.t);
+      // An encroached element split on t's behalf may leave t alive: it waits again.
+      if (m_.dt.num_points() > before && same(e)) queue_.push_back(e);
       if (o_.progress && (++steps_ & 0x3FFF) == 0)
         std::fprintf(stderr, "\rrefine: %zu vertices, %zu queued   ", m_.dt.num_points(),
                      queue_.size() - head_);
@@ -184,9 +189,11 @@ class Refiner {
     refused_.push_back({verts(t), std::move(why)});
   }
 
-  // Subsegments that are edges of the closure tets of `c` and whose closed diametral
-  // ball holds p (Fig. 2 "p encroaches subsegment s ∈ C_p").
-  std::optional<std::uint32_t> encroached_subsegment(const Cavity& c, const Point& p) const {
+  // Subsegments that are edges of the given tets (the closure of p's cavity: its conflict
+  // tets and ring) and whose closed diametral ball holds p (Fig. 2 "p encroaches
+  // subsegment s ∈ C_p").
+  using Tets = std::initializer_list<std::span<const TetId>>;
+  std::optional<std::uint32_t> encroached_subsegment(Tets tets, const Point& p) const {
     const TetStore& s = m_.dt.store();
     auto scan = [&](TetId t) -> std::optional<std::uint32_t> {
       if (s.is_ghost(t)) return std::nullopt;
@@ -198,16 +205,15 @@ class Refiner {
       }
       return std::nullopt;
     };
-    for (const TetId t : c.conflict)
-      if (auto r = scan(t)) return r;
-    for (const TetId t : c.ring)
-      if (auto r = scan(t)) return r;
+    for (const auto& list : tets)
+      for (const TetId t : list)
+        if (auto r = scan(t)) return r;
     return std::nullopt;
   }
 
-  // The subfacet of largest circumradius among the faces of the closure tets whose closed
+  // The subfacet of largest circumradius among the faces of the given tets whose closed
   // equatorial ball holds p (Fig. 2 "f <- max radius(f) that p encroaches").
-  std::optional<std::uint32_t> encroached_subfacet(const Cavity& c, const Point& p) const {
+  std::optional<std::uint32_t> encroached_subfacet(Tets tets, const Point& p) const {
     std::optional<std::uint32_t> best;
     double best_r2 = -1;
     auto scan = [&](TetId t) {
@@ -222,9 +228,8 @@ class Refiner {
         if (r2 > best_r2) best_r2 = r2, best = *sf;
       }
     };
-    for (const TetId t : c.conflict)
-      scan(t);
-    for (const TetId t : c.ring) scan(t);
+    for (const auto& list : tets)
+      for (const TetId t : list) scan(t);
     return best;
   }
 
@@ -290,6 +295,10 @@ class Refiner {
   // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t (kNoTet: f is encroached);
   // `hint` locates its circumcenter.
   void refine_subfacet(std::uint32_t f, TetId hint, TetId t) {
+    if (std::string why = guard_.refuse_subfacet(m_.surf, f); !why.empty()) {
+      give_up(t, std::move(why));
+      return;
+    }
     const FacetCavity fc = plan_circumcenter(m_.surf, f);
     if (fc.status == CavityStatus::Encroaches && !fc.encroached.empty()) {
       if (auto why = split(fc.encroached.front(), hint)) give_up(t, std::move(*why));
@@ -306,7 +315,7 @@ class Refiner {
       give_up(t, "refine.subfacet: circumcenter " + fmt(fc.p) + " is already a vertex");
       return;
     }
-    if (const auto s = encroached_subsegment(cav2_, fc.p)) {
+    if (const auto s = encroached_subsegment({cav2_.conflict, cav2_.ring}, fc.p)) {
       if (auto why = split(*s, hint)) give_up(t, std::move(*why));
       return;
     }
@@ -337,6 +346,19 @@ class Refiner {
                         " tet faces at the vertex are subfacets (expected twice as many)");
   }
 
+  bool refine_own_element(TetId t, const Point& p) {
+    const std::span<const TetId> own(&t, 1);
+    if (const auto s = encroached_subsegment({own}, p)) {
+      if (auto why = split(*s, t)) refuse(t, std::move(*why));
+      return true;
+    }
+    if (const auto f = encroached_subfacet({own}, p)) {
+      refine_subfacet(*f, t, t);
+      return true;
+    }
+    return false;
+  }
+
   void refine_tet(TetId t) {
     if (const auto f = flat_on_facet(m_, t)) {  // a sliver on a facet: surface_flat.hpp
       refine_subfacet(*f, t, t);
@@ -345,16 +367,20 @@ class Refiner {
     const VertexId* v = m_.dt.store().vertices(t);
     const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
     const Point p = construct::circumcenter(a, b, c, d);
+    // Outside the theory, an element of t itself that p encroaches is in the closure too
+    // (t conflicts with p) and is refined without building p's cavity, which for a skinny
+    // tet at a sharp angle spans much of T (and would be built for each refused tet).
+    if (guard_.active() && refine_own_element(t, p)) return;
     bool outside = false;
     if (!plan(p, t, cav_, outside)) {
       refuse(t, "refine.tet: circumcenter " + fmt(p) + " is already a vertex");
       return;
     }
-    if (const auto s = encroached_subsegment(cav_, p)) {
+    if (const auto s = encroached_subsegment({cav_.conflict, cav_.ring}, p)) {
       if (auto why = split(*s, t)) refuse(t, std::move(*why));
       return;
     }
-    if (const auto f = encroached_subfacet(cav_, p)) {
+    if (const auto f = encroached_subfacet({cav_.conflict, cav_.ring}, p)) {
       refine_subfacet(*f, t, t);
       return;
     }

@@ -7,8 +7,9 @@
 //   p = circumcenter(t) (double: where only); the tet containing p is located from t and
 //   the cavity of p built read-only from it;
 //   1. p in the CLOSED diametral ball of a subsegment that is an edge of a closure tet:
-//      split that subsegment instead (midpoint; near an acute input vertex, at a power of
-//      two distance from it: concentric shells, refine_split.cpp); return;
+//      split that subsegment instead (refine_split.hpp: the midpoint; outside the theory,
+//      near an acute input vertex, at a power-of-two distance from it: concentric shells);
+//      return;
 //   2. p in the closed equatorial ball of subfacets that are faces of closure tets: refine
 //      the one of largest circumradius at its circumcenter q in the facet (Fig. 2); q may
 //      encroach a subsegment (on the facet cavity's boundary, or an edge of q's closure in
@@ -17,14 +18,26 @@
 //      must have been an encroached element; if not, the tet is refused with that reason;
 //   4. commit: T gains p, the new tets get their flags (refine_mesh.hpp) and are queued
 //      when bad.
-// Every step inserts a vertex or refuses a tet (a refused tet is not queued again unless
-// it is destroyed and rebuilt), and the number of vertices is capped, so a run never
-// hangs. Guards for domains outside the theory (angles < 90°):
-//   - a subsegment whose split would be shorter than the protected length at an acute
-//     vertex is not split; the tet whose refinement needed it is refused, with the reason;
+// After 1 or 2, t may still be alive (the split's cavity missed it): it is queued again.
+// Every step inserts a vertex or refuses (a refused tet is not queued again unless it is
+// destroyed and rebuilt), and the number of vertices is capped, so a run never hangs.
+// Guards for domains outside the theory (angles < 90°; RefineOptions::admissible false):
+//   - encroachment pass (refine_guard.hpp): Lemma 1 no longer keeps D unencroached, so
+//     encroached subsegments and subfacets are found exactly (strictly inside the ball, as
+//     the checker) among the tets of T_o once, then among the star of every new vertex,
+//     and refined before any tet: subsegments first (Refine(s)), then subfacets
+//     (Refine(f), step 2's circumcenter with its subsegment fallback);
+//   - concentric shells at the acute vertices (RefineOptions::acute_vertices from the
+//     domain analysis, refine_split.hpp);
+//   - protected length (resolution / 64, the resolution being the smallest of d/2, L/2,
+//     cbrt(V)): on segments and facets at an acute vertex nothing is split below it; the
+//     tet (or encroached element) whose refinement needed that split is refused, with the
+//     reason;
 //   - the vertex cap (RefineOptions::max_vertices, else derived from the input size,
-//     the domain's bounding box and d, B, L, V) stops the loop with stop_reason set.
-// After the loop every inside tet with ratio >= B is listed (leftovers) with the reason.
+//     the domain's bounding box and the resolution) stops the loop with stop_reason set.
+// After the loop every inside tet with ratio >= B is listed (leftovers) with the reason,
+// and every encroached element the guards refused is listed (unsplit); the exact checker
+// on the output reports any encroachment left (pdr mesh then exits 3).
 // Lemma 1 audit (RefineOptions::audit): after each insertion, refine_audit.hpp checks
 // invariants 1-4 on what it touched and throws RefineError("lemma1.invariantK: ...").
 #pragma once

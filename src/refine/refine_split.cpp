@@ -34,6 +34,25 @@ SplitGuard::SplitGuard(const SurfaceMesh& m, const std::vector<std::uint32_t>& a
   guarded_.assign(m.segments.size(), 0);
   for (std::size_t s = 0; s < m.segments.size(); ++s)
     guarded_[s] = static_cast<std::uint8_t>(is_acute(m.segments[s].a) || is_acute(m.segments[s].b));
+  guarded_facet_.assign(m.facets.size(), 0);
+  for (std::size_t f = 0; f < m.facets.size(); ++f)
+    for (const std::uint32_t s : m.facets[f].segments)
+      if (guarded_[s]) guarded_facet_[f] = 1;
+}
+
+std::string SplitGuard::refuse_subfacet(const SurfaceMesh& m, std::uint32_t f) const {
+  const Subfacet& x = m.subfacet(f);
+  if (!active() || !guarded_facet_[x.facet]) return {};
+  const double r = std::sqrt(construct::triangle_circumradius2(m.point(x.v[0]), m.point(x.v[1]),
+                                                               m.point(x.v[2])));
+  if (r >= protected_) return {};
+  std::ostringstream os;
+  os.precision(6);
+  os << "refine.protected: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2]
+     << ") of " << m.facet_name(x.facet) << " has circumradius " << r
+     << " < the protected length " << protected_
+     << " of a facet at an acute input vertex (angle < 90 deg)";
+  return os.str();
 }
 
 namespace {

@@ -12,8 +12,12 @@
 //                   around a small angle stops); otherwise the midpoint;
 //   protected       on a guarded segment no split leaves a piece shorter than the
 //                   protected length (the caller's resolution / 64: a floor on how fine the
-//                   shells go); plan_split then refuses, with the reason, and the caller
-//                   reports the element it could not refine.
+//                   shells go); plan then refuses, with the reason, and the caller reports
+//                   the element it could not refine. Likewise a subfacet of circumradius
+//                   below the protected length on a guarded facet (one containing a
+//                   guarded segment) is not refined (refuse_subfacet): near a sharp
+//                   dihedral the subfacets of the two facets encroach each other at every
+//                   scale, and this floor ends that cascade.
 // For an admissible domain the guard is empty: every split is the midpoint, as Lemma 1
 // needs. Lengths and the split point are floating point: they say where, not whether; the
 // point is a + t (b - a), on the segment up to rounding like the midpoint.
@@ -43,12 +47,15 @@ class SplitGuard {
     std::string reason;  // why not (!ok)
   };
   Plan plan(const SurfaceMesh& m, std::uint32_t subsegment) const;
+  // Why subfacet f may not be refined, or empty.
+  std::string refuse_subfacet(const SurfaceMesh& m, std::uint32_t f) const;
   bool active() const { return !acute_.empty(); }
   double protected_length() const { return protected_; }
 
  private:
   std::vector<std::uint8_t> acute_;    // per input vertex of D
   std::vector<std::uint8_t> guarded_;  // per segment
+  std::vector<std::uint8_t> guarded_facet_;
   double protected_ = 0;
 
   bool is_acute(std::uint32_t v) const { return v < acute_.size() && acute_[v] != 0; }
