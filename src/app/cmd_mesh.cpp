@@ -29,6 +29,7 @@
 #include "refine/refine_initial.hpp"
 #include "refine/refine_quality.hpp"
 #include "refine/refine_seq.hpp"
+#include "refine/refine_split.hpp"
 #include "refine/surface_init.hpp"
 
 namespace pdr::app {
@@ -123,6 +124,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   refine::RefineOptions opt = args.options;
   opt.d = an.report.feature.d;
   opt.admissible = an.report.admissible;
+  opt.acute_vertices = refine::acute_vertices(an.report);  // the guards' shells
   opt.progress = opt.progress || isatty(STDERR_FILENO) == 1;
   refine::SurfaceInit si = refine::init_surface(an);
   summary.set("surface_vertices", si.mesh.vertex_count());
@@ -142,6 +144,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
                            {"refused", rr.stats.refused},
                            {"vertex_cap", rr.stats.vertex_cap}});
   if (!rr.stop_reason.empty()) summary.set("stop_reason", rr.stop_reason);
+  if (!rr.unsplit.empty()) summary.set("unsplit", rr.unsplit);  // refused by the guards
   if (rr.stats.audit_failures > 0)
     summary.set("audit", std::to_string(rr.stats.audit_failures) +
                              " Lemma 1 failures (inadmissible domain); first: " +
