@@ -7,7 +7,7 @@
 // the mesher terminates without an error, every tet has radius-edge ratio < 2, and the
 // exact checker (src/check, with the domain) passes every check.
 //
-// Cases: 40 by default (PDR_REFINE_CASES=N for more; RC_PARAMS=seed=S reproduces a run).
+// Cases: 50 by default (PDR_REFINE_CASES=N for more; RC_PARAMS=seed=S reproduces a run).
 // A failing case is written, after every shrinking step, to the file named by
 // PDR_REFINE_COUNTEREXAMPLE (default: refine-counterexample.poly in the working
 // directory); the last one written is the shrunk domain, with its options in a comment:
@@ -47,6 +47,8 @@ struct Sizing {
     return s.str();
   }
 };
+
+void showValue(const Sizing& z, std::ostream& os) { os << "options:" << z.options(); }
 
 // "# options: --max-volume V --size L" in a regress file's comments.
 Sizing sizing_of_file(const std::string& path) {
@@ -115,7 +117,7 @@ std::string mesh_failure(const Plc& plc, const Sizing& z) {
 
 int cases() {
   const char* env = std::getenv("PDR_REFINE_CASES");
-  return env ? std::max(1, std::atoi(env)) : 40;
+  return env ? std::max(1, std::atoi(env)) : 50;
 }
 
 std::string counterexample_path() {
@@ -146,6 +148,14 @@ TEST(RefineProperty, GeneratedDomainsAreAdmissibleAndRoundTrip) {
     RC_LOG() << to_json(an.report).dump(1);
     RC_ASSERT(an.report.admissible);
     RC_ASSERT(an.report.feature.d > 0);
+    bool facet_holes = false, multi_polygon = false;
+    for (const PlcFacet& f : plc.facets) {
+      facet_holes = facet_holes || !f.holes.empty();
+      multi_polygon = multi_polygon || f.polygons.size() > 1;
+    }
+    RC_CLASSIFY(facet_holes, "facet with a hole");
+    RC_CLASSIFY(multi_polygon, "facet of several polygons");
+    RC_CLASSIFY(!plc.holes.empty(), "void");
     const auto path = std::filesystem::temp_directory_path() /
                       ("pdr-roundtrip-" + std::to_string(::getpid()) + ".poly");
     std::ofstream(path) << poly_text(plc, "round trip");
@@ -177,11 +187,18 @@ TEST(RefineProperty, MeshPassesEveryCheck) {
 
 // Replays of tests/regress/refine-*.poly, one test each (registered below). A case of a
 // known open bug is registered DISABLED_ (gtest lists it) with the bug named here.
-struct KnownBug {
-  const char* file;
-  const char* bug;
+const std::vector<std::string> kKnownBugs = {
+    // Tilted near-planar facets (issue #3, helper D), still failing after 5d0d1d4: a cap
+    // subfacet encroached by a wall vertex (lemma1.invariant1); a near-flat tet whose double
+    // ratio (summary ratio_max 2.65) disagrees with the exact checker's pass.
+    "refine-hexprism-tilted-invariant1.poly",
+    "refine-hexprism-ratio-summary-vs-checker.poly",
+    // Refinement with size control on non-dyadic coordinates (issue #3; refine_seq /
+    // kernel, helpers A and C): a tet circumcenter lands 0.0175 from an existing facet
+    // vertex while the tet's circumradius is 0.0597 (lemma1.invariant4); the same cube
+    // scaled to [0,1]^3 passes, and without the audit the mesh passes every exact check.
+    "refine-cube-nondyadic-size-invariant4.poly",
 };
-const std::vector<KnownBug> kKnownBugs = {};
 
 class Replay : public ::testing::Test {
  public:
@@ -206,8 +223,8 @@ bool register_replays() {
   std::sort(files.begin(), files.end());
   for (const auto& p : files) {
     std::string name = p.stem().string();
-    for (const KnownBug& k : kKnownBugs)
-      if (p.filename() == k.file) name = "DISABLED_" + name;
+    if (std::find(kKnownBugs.begin(), kKnownBugs.end(), p.filename().string()) != kKnownBugs.end())
+      name = "DISABLED_" + name;
     std::replace(name.begin(), name.end(), '-', '_');
     ::testing::RegisterTest("RefineRegress", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                             [p]() -> ::testing::Test* { return new Replay(p.string()); });
