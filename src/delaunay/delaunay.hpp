@@ -96,6 +96,10 @@ class Delaunay {
   // The same for a point already added as vertex v (point(v) == c.point). Returns a new
   // tet incident to v (a finite one when there is one), which is also last_tet().
   TetId commit(const Cavity& c, VertexId v);
+  // The tets made by the last commit, in the order of its cavity's boundary: entry i
+  // holds the new vertex and boundary face c.boundary[i], at the same face index (valid
+  // until the next commit).
+  std::span<const TetId> last_created() const { return committer_.created(); }
   // Locate + cavity + commit, walking from `hint` (kNoTet: last_tet()). Inserted, or
   // Duplicate (then nothing changes, and the point is not added).
   InsertResult insert(const Point& p, TetId hint = kNoTet);

@@ -32,6 +32,9 @@ VolumeMesh build_initial(SurfaceMesh surf, std::span<const Point> holes, std::ui
     pts.push_back(surf.point(v));
   }
   m.surf = std::move(surf);
+  for (const std::uint32_t v : m.d2s)
+    m.vclass.push_back(m.surf.home(v).kind == HomeKind::Facet ? VertexClass::Facet
+                                                              : VertexClass::Segment);
   m.dt = Delaunay(std::move(pts));
   BulkOptions bo;
   bo.seed = seed;

@@ -106,46 +106,90 @@ mpq_class exact_min_edge2(const Point& a, const Point& b, const Point& c, const 
   return best;
 }
 
+// Each test on precomputed measures: Positive/Negative when the filter decides, Zero when
+// GMP must.
+Sign ratio_filter(const Measures& m, const Point& a, const Point& b, const Point& c,
+                  const Point& d, double bound) {
+  if (m.degenerate) return Sign::Zero;
+  double eb;
+  const double l2 = min_edge2(a, b, c, d, eb);
+  const double k = 4 * bound * bound;
+  const double rhs_lo = k * std::max(0.0, l2 - eb) * m.d2.lo * (1 - kRel);
+  const double rhs_hi = k * (l2 + eb) * m.d2.hi * (1 + kRel);
+  if (m.x2.lo > rhs_hi) return Sign::Positive;
+  if (m.x2.hi < rhs_lo) return Sign::Negative;
+  return Sign::Zero;
+}
+bool ratio_exact(const Point& a, const Point& b, const Point& c, const Point& d,
+                 double bound) {
+  const mpq_class bb = mpq_class(bound) * mpq_class(bound);
+  return exact::circumradius2(a, b, c, d) >= bb * exact_min_edge2(a, b, c, d);
+}
+
+Sign radius_filter(const Measures& m, double size) {
+  if (m.degenerate) return Sign::Zero;
+  const double k = 4 * size * size;
+  if (m.x2.lo > k * m.d2.hi * (1 + kRel)) return Sign::Positive;
+  if (m.x2.hi < k * m.d2.lo * (1 - kRel)) return Sign::Negative;
+  return Sign::Zero;
+}
+bool radius_exact(const Point& a, const Point& b, const Point& c, const Point& d,
+                  double size) {
+  return exact::circumradius2(a, b, c, d) > mpq_class(size) * mpq_class(size);
+}
+
+Sign volume_filter(const Measures& m, double max_volume) {
+  if (m.degenerate) return Sign::Zero;
+  const double v6 = 6 * max_volume;  // exact up to one rounding: covered by kRel
+  if (m.d2.lo > v6 * v6 * (1 + kRel)) return Sign::Positive;
+  if (m.d2.hi < v6 * v6 * (1 - kRel)) return Sign::Negative;
+  return Sign::Zero;
+}
+bool volume_exact(const Point& a, const Point& b, const Point& c, const Point& d,
+                  double max_volume) {
+  return exact::volume6(a, b, c, d) > mpq_class(6) * mpq_class(max_volume);
+}
+
+bool decide(Sign filtered, auto exact) {
+  return filtered == Sign::Zero ? exact() : filtered == Sign::Positive;
+}
+
 }  // namespace
 
 // R^2 >= B^2 lmin^2  <=>  |X|^2 >= 4 B^2 lmin^2 D^2.
 bool ratio_at_least(const Point& a, const Point& b, const Point& c, const Point& d,
                     double bound) {
-  const Measures m = measure(a, b, c, d);
-  if (!m.degenerate) {
-    double eb;
-    const double l2 = min_edge2(a, b, c, d, eb);
-    const double k = 4 * bound * bound;
-    const double rhs_lo = k * std::max(0.0, l2 - eb) * m.d2.lo * (1 - kRel);
-    const double rhs_hi = k * (l2 + eb) * m.d2.hi * (1 + kRel);
-    if (m.x2.lo > rhs_hi) return true;
-    if (m.x2.hi < rhs_lo) return false;
-  }
-  const mpq_class bb = mpq_class(bound) * mpq_class(bound);
-  return exact::circumradius2(a, b, c, d) >= bb * exact_min_edge2(a, b, c, d);
+  return decide(ratio_filter(measure(a, b, c, d), a, b, c, d, bound),
+                [&] { return ratio_exact(a, b, c, d, bound); });
 }
 
 // R^2 > L^2  <=>  |X|^2 > 4 L^2 D^2.
 bool radius_above(const Point& a, const Point& b, const Point& c, const Point& d,
                   double size) {
-  const Measures m = measure(a, b, c, d);
-  if (!m.degenerate) {
-    const double k = 4 * size * size;
-    if (m.x2.lo > k * m.d2.hi * (1 + kRel)) return true;
-    if (m.x2.hi < k * m.d2.lo * (1 - kRel)) return false;
-  }
-  return exact::circumradius2(a, b, c, d) > mpq_class(size) * mpq_class(size);
+  return decide(radius_filter(measure(a, b, c, d), size),
+                [&] { return radius_exact(a, b, c, d, size); });
 }
 
 bool volume_above(const Point& a, const Point& b, const Point& c, const Point& d,
                   double max_volume) {
+  return decide(volume_filter(measure(a, b, c, d), max_volume),
+                [&] { return volume_exact(a, b, c, d, max_volume); });
+}
+
+// The three tests on one evaluation of the measures; the volume test first (it needs no
+// edge lengths), each falling back to GMP alone when its filter cannot decide.
+bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
+            const TetBounds& bounds) {
   const Measures m = measure(a, b, c, d);
-  const double v6 = 6 * max_volume;  // exact up to one rounding: covered by kRel
-  if (!m.degenerate) {
-    if (m.d2.lo > v6 * v6 * (1 + kRel)) return true;
-    if (m.d2.hi < v6 * v6 * (1 - kRel)) return false;
-  }
-  return exact::volume6(a, b, c, d) > mpq_class(6) * mpq_class(max_volume);
+  if (bounds.max_volume && decide(volume_filter(m, *bounds.max_volume), [&] {
+        return volume_exact(a, b, c, d, *bounds.max_volume);
+      }))
+    return true;
+  if (bounds.size &&
+      decide(radius_filter(m, *bounds.size), [&] { return radius_exact(a, b, c, d, *bounds.size); }))
+    return true;
+  return decide(ratio_filter(m, a, b, c, d, bounds.ratio),
+                [&] { return ratio_exact(a, b, c, d, bounds.ratio); });
 }
 
 double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d) {
@@ -174,16 +218,21 @@ void dihedral_range(const Point& a, const Point& b, const Point& c, const Point&
     const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
     for (int k = 0; k < 3; ++k) r[k] = len > 0 ? r[k] / len : 0;
   }
+  // Faces listed by mesh/tables.hpp are all oriented outward, so the interior dihedral
+  // angle is pi - angle(n_i, n_j) = pi - acos(n_i . n_j), increasing with the dot
+  // product: the extreme angles are at the extreme dot products (two acos, not six).
+  double lo = 1, hi = -1;
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
-      double dot = n[i][0] * n[j][0] + n[i][1] * n[j][1] + n[i][2] * n[j][2];
-      dot = std::clamp(dot, -1.0, 1.0);
-      // Faces listed by mesh/tables.hpp are all oriented outward, so the interior
-      // dihedral angle is pi - angle(n_i, n_j).
-      const double ang = 180.0 - std::acos(dot) * 180.0 / std::numbers::pi;
-      min_deg = std::min(min_deg, ang);
-      max_deg = std::max(max_deg, ang);
+      const double dot = n[i][0] * n[j][0] + n[i][1] * n[j][1] + n[i][2] * n[j][2];
+      lo = std::min(lo, dot);
+      hi = std::max(hi, dot);
     }
+  auto degrees = [](double dot) {
+    return 180.0 - std::acos(std::clamp(dot, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  };
+  min_deg = std::min(min_deg, degrees(lo));
+  max_deg = std::max(max_deg, degrees(hi));
 }
 
 }  // namespace pdr::refine

@@ -18,9 +18,18 @@
 // (geom/input_range.hpp: no overflow or underflow in the filter).
 #pragma once
 
+#include <optional>
+
 #include "geom/point.hpp"
 
 namespace pdr::refine {
+
+// The bounds of SeqRefinement's loop (refine_seq.hpp): B, and L and V when given.
+struct TetBounds {
+  double ratio = 2.0;
+  std::optional<double> size;
+  std::optional<double> max_volume;
+};
 
 bool ratio_at_least(const Point& a, const Point& b, const Point& c, const Point& d,
                     double bound);
@@ -28,6 +37,9 @@ bool radius_above(const Point& a, const Point& b, const Point& c, const Point& d
                   double size);
 bool volume_above(const Point& a, const Point& b, const Point& c, const Point& d,
                   double max_volume);
+// ratio_at_least || radius_above || volume_above, the measures computed once.
+bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
+            const TetBounds& bounds);
 
 // Display only (summaries): the radius-edge ratio and the dihedral angles in degrees.
 double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d);

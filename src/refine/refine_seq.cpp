@@ -98,7 +98,6 @@ class Refiner {
   std::uint64_t steps_ = 0;
   Cavity cav_, cav2_;
   std::vector<TetId> star_;
-  std::vector<std::uint8_t> mark_;
   std::vector<std::pair<std::array<VertexId, 4>, std::string>> refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
@@ -169,11 +168,8 @@ class Refiner {
 
   bool bad(TetId t) const {
     const VertexId* v = m_.dt.store().vertices(t);
-    const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
-    if (ratio_at_least(a, b, c, d, o_.ratio)) return true;
-    if (o_.size && radius_above(a, b, c, d, *o_.size)) return true;
-    if (o_.max_volume && volume_above(a, b, c, d, *o_.max_volume)) return true;
-    return flat_on_facet(m_, t).has_value();  // issue #3: surface_flat.hpp
+    return is_bad(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), {o_.ratio, o_.size, o_.max_volume}) ||
+           flat_on_facet(m_, t).has_value();  // issue #3: surface_flat.hpp
   }
   void consider(TetId t) {
     if (bad(t)) queue_.push_back({t, verts(t)});
@@ -278,7 +274,7 @@ class Refiner {
     if (!plan(p, hint, cav_, outside))
       throw RefineError("refine.split: the split point " + fmt(p) + " of " + name +
                         " is already a vertex");
-    const VertexId v = commit_point(m_, cav_, r.vertex, star_, mark_);
+    const VertexId v = commit_point(m_, cav_, r.vertex, star_);
     ++res_.stats.subsegment_splits;
     after_insert(v, "subsegment", piece2);
     return std::nullopt;
@@ -325,7 +321,7 @@ class Refiner {
     res_.stats.h = std::min(res_.stats.h, std::sqrt(r2 / 2));
     const std::uint32_t sv = m_.surf.add_vertex(fc.p, {HomeKind::Facet, fc.facet});
     const std::vector<std::uint32_t> fresh = commit_facet_cavity(m_.surf, fc, sv);
-    const VertexId v = commit_point(m_, cav2_, sv, star_, mark_);
+    const VertexId v = commit_point(m_, cav2_, sv, star_);
     ++res_.stats.subfacet_circumcenters;
     verify_subfacets_present(v, fresh);
     after_insert(v, "subfacet", r2);
@@ -392,7 +388,7 @@ class Refiner {
     }
     const double r2 = construct::circumradius2(a, b, c, d);
     res_.stats.h = std::min(res_.stats.h, std::sqrt(r2) / 2);
-    const VertexId nv = commit_point(m_, cav_, kNone, star_, mark_);
+    const VertexId nv = commit_point(m_, cav_, kNone, star_);
     ++res_.stats.tet_circumcenters;
     after_insert(nv, "tet", r2);
   }
