@@ -169,7 +169,7 @@ class Refiner {
   bool bad(TetId t) const {
     const VertexId* v = m_.dt.store().vertices(t);
     return is_bad(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), {o_.ratio, o_.size, o_.max_volume}) ||
-           flat_on_facet(m_, t).has_value();  // issue #3: surface_flat.hpp
+           subfacet_to_refine(m_, t).has_value();  // issue #3: surface_flat.hpp
   }
   void consider(TetId t) {
     if (bad(t)) queue_.push_back({t, verts(t)});
@@ -356,7 +356,7 @@ class Refiner {
   }
 
   void refine_tet(TetId t) {
-    if (const auto f = flat_on_facet(m_, t)) {  // a sliver on a facet: surface_flat.hpp
+    if (const auto f = subfacet_to_refine(m_, t)) {  // issue #3: surface_flat.hpp
       refine_subfacet(*f, t, t);
       return;
     }

@@ -1,11 +1,12 @@
-// Flat tets on a facet (issue #3); see surface_flat.hpp.
+// Subfacets a tet asks to refine (issue #3); see surface_flat.hpp.
 #include "refine/surface_flat.hpp"
 
 #include "geom/construct.hpp"
+#include "geom/encroach.hpp"
 
 namespace pdr::refine {
 
-std::optional<std::uint32_t> flat_on_facet(const VolumeMesh& m, TetId t) {
+std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t) {
   const TetStore& s = m.dt.store();
   std::optional<std::uint32_t> best;
   double best_r2 = -1;
@@ -13,16 +14,17 @@ std::optional<std::uint32_t> flat_on_facet(const VolumeMesh& m, TetId t) {
     const auto sf = m.face_subfacet(t, f);
     if (!sf) continue;
     const VertexId apex = s.vertex(t, f);
-    const std::uint32_t v = apex < m.d2s.size() ? m.d2s[apex] : kNone;
-    if (v == kNone) continue;
-    const std::uint32_t facet = m.surf.subfacet(*sf).facet;
-    bool on = false;
-    for (const std::uint32_t x : m.surf.vertex_subfacets(v))
-      on = on || (m.surf.subfacet(x).alive && m.surf.subfacet(x).facet == facet);
-    if (!on) continue;
+    if (apex == kGhostVertex) continue;
     const Subfacet& x = m.surf.subfacet(*sf);
-    const double r2 = construct::triangle_circumradius2(  // a choice only
-        m.surf.point(x.v[0]), m.surf.point(x.v[1]), m.surf.point(x.v[2]));
+    const Point &a = m.surf.point(x.v[0]), &b = m.surf.point(x.v[1]), &c = m.surf.point(x.v[2]);
+    const std::uint32_t v = apex < m.d2s.size() ? m.d2s[apex] : kNone;
+    bool hit = false;
+    if (v != kNone)
+      for (const std::uint32_t y : m.surf.vertex_subfacets(v))
+        hit = hit || (m.surf.subfacet(y).alive && m.surf.subfacet(y).facet == x.facet);
+    hit = hit || in_equatorial_ball(a, b, c, m.dt.point(apex)) == Sign::Positive;
+    if (!hit) continue;
+    const double r2 = construct::triangle_circumradius2(a, b, c);  // a choice only
     if (r2 > best_r2) best_r2 = r2, best = *sf;
   }
   return best;
