@@ -49,9 +49,9 @@ Plc voxel_solid(double unit, int& width) {
 }
 
 // A hexagon with every angle >= 90 degrees, counter-clockwise, in units.
-std::vector<P2d> hexagon(double unit) {
+std::vector<P2d> hexagon(double unit, bool rounded) {
   std::vector<P2d> h;
-  if (*rc::gen::inRange(0, 2) == 0) {
+  if (!rounded || *rc::gen::inRange(0, 2) == 0) {
     // Integer: angles 180 - atan(hh/b) and 2 atan(hh/b) > 90 (b < hh: not exactly 90,
     // which a non-dyadic unit would round either way).
     const int a = *rc::gen::inRange(1, 3), hh = *rc::gen::inRange(2, 4);
@@ -82,8 +82,8 @@ Plc hex_prism(std::vector<P2d> h, double dx, double dy, double z0, double z1) {
 }
 
 // The hexagonal prism standing on a slab that surrounds its footprint by `margin` units.
-Plc hex_on_slab(double unit) {
-  const std::vector<P2d> h = hexagon(unit);
+Plc hex_on_slab(double unit, bool rounded) {
+  const std::vector<P2d> h = hexagon(unit, rounded);
   const double margin = *rc::gen::inRange(1, 3) * unit;
   const double t = *rc::gen::inRange(1, 3) * unit, top = t + *rc::gen::inRange(1, 4) * unit;
   double w = 0, d = 0;
@@ -114,18 +114,18 @@ Plc hex_on_slab(double unit) {
 
 }  // namespace
 
-rc::Gen<Plc> gen_admissible_domain() {
-  return rc::gen::exec([] {
+rc::Gen<Plc> gen_admissible_domain(bool rounded_hexagons) {
+  return rc::gen::exec([rounded_hexagons] {
     static const double units[] = {1.0, 0.5, 0.3, 1.25, 0.1};
     const double unit = units[*rc::gen::inRange(0, 5)];
     const int kind = *rc::gen::inRange(0, 4);
     int width = 0;
     if (kind == 0) return voxel_solid(unit, width);
     const double z1 = *rc::gen::inRange(1, 4) * unit;
-    if (kind == 1) return hex_prism(hexagon(unit), 0, 0, 0, z1);
-    if (kind == 2) return hex_on_slab(unit);
+    if (kind == 1) return hex_prism(hexagon(unit, rounded_hexagons), 0, 0, 0, z1);
+    if (kind == 2) return hex_on_slab(unit, rounded_hexagons);
     const Plc solid = voxel_solid(unit, width);
-    return merge(solid, hex_prism(hexagon(unit), (width + 1) * unit, 0, 0, z1));
+    return merge(solid, hex_prism(hexagon(unit, rounded_hexagons), (width + 1) * unit, 0, 0, z1));
   });
 }
 

@@ -24,7 +24,8 @@
 
 namespace pdr::refine::test {
 
-rc::Gen<Plc> gen_admissible_domain();
+// rounded_hexagons: also rotated regular hexagons (coordinates not representable).
+rc::Gen<Plc> gen_admissible_domain(bool rounded_hexagons = true);
 
 // The PLC as a TetGen .poly file (1-based, coordinates with 17 significant digits: the
 // reader gives back the same doubles), with `comment` as its first line(s).
