@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "geom/construct.hpp"
+#include "geom/encroach.hpp"
 #include "geom/exact.hpp"
 #include "geom/predicates.hpp"
 #include "geom_generators.hpp"
@@ -102,6 +103,44 @@ TEST(Construct, TriangleCircumcenterWithinBound) {
     ++checked;
   }
   EXPECT_GT(checked, 1500);
+}
+
+// Nearly flat tetrahedra and nearly collinear triangles (four points near a circle, three
+// near a line, perturbed by a few ulps of non-dyadic coordinates): the floating-point
+// formula is far off there, so the construction falls back to the exact center; either
+// way the result is within 2^-22 R of the true center in every coordinate.
+TEST(Construct, CircumcentersOfSliversAreAccurate) {
+  geomgen::Rng r(13);
+  int far_off = 0;
+  for (int i = 0; i < 400; ++i) {
+    const double s = 0.1 + 0.01 * (i % 7);
+    std::array<Point, 4> p;
+    for (int k = 0; k < 4; ++k) {
+      const double t = 1.7 * k + 0.3 * (i % 5);
+      // On the circle of radius s in the plane y = 0.05, nudged off it by an ulp or so.
+      p[k] = {0.05 + s * std::cos(t), 0.05 + (k == 3 ? 0x1p-56 * (1 + i % 3) : 0.0),
+              0.05 + s * std::sin(t)};
+    }
+    if (orient3d(p[0], p[1], p[2], p[3]) == Sign::Zero) continue;
+    const auto c = exact::circumcenter(p[0], p[1], p[2], p[3]);
+    const double R = std::sqrt(exact::circumradius2(p[0], p[1], p[2], p[3]).get_d());
+    const Point x = construct::circumcenter(p[0], p[1], p[2], p[3]);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LE(std::fabs(d(mpq_class(x[k]) - c[k])), 0x1p-22 * R) << i;
+    // The plain formula is not within that bound on most of these (the test is not vacuous).
+    const double L = std::max({len(p[0], p[1]), len(p[0], p[2]), len(p[0], p[3])});
+    far_off += 12 * 9 * u * L * L * L >= 2 * std::fabs(exact::volume6(p[0], p[1], p[2], p[3]).get_d()) / 4;
+  }
+  EXPECT_GT(far_off, 100);
+  for (int i = 0; i < 200; ++i) {
+    const Point a = {0.1, 0.3, 0.7}, b = {0.1 + 0.1 * (1 + i % 9), 0.3, 0.7};
+    const Point c = {0.1 + 0.05 * (1 + i % 4), 0.3 + 0x1p-50 * (1 + i % 5), 0.7};
+    const auto q = exact::triangle_circumcenter(a, b, c);
+    const double R = std::sqrt(exact::triangle_circumradius2(a, b, c).get_d());
+    const Point x = construct::triangle_circumcenter(a, b, c);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LE(std::fabs(d(mpq_class(x[k]) - q[k])), 0x1p-22 * R + 0x1p-52 * std::fabs(q[k].get_d())) << i;
+  }
 }
 
 }  // namespace
