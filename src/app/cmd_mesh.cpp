@@ -117,6 +117,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   summary.set("admissible", an.report.admissible);
   const nlohmann::json report = refine::to_json(an.report);
   summary.set("admissibility_violations", report.at("admissibility").at("violations"));
+  // Facets accepted as planar only within the documented relative tolerance (README).
+  summary.set("planarity", report.at("planarity"));
   summary.set("d", an.report.feature.d);
   timer.lap("analyze");
 
