@@ -191,16 +191,10 @@ TEST(RefineProperty, MeshPassesEveryCheck) {
 // Replays of tests/regress/refine-*.poly, one test each (registered below). A case of a
 // known open bug is registered DISABLED_ (gtest lists it) with the bug named here.
 const std::vector<std::string> kKnownBugs = {
-    // Tilted near-planar facets (issue #3, helper D), still failing after 5d0d1d4: a cap
-    // subfacet encroached by a wall vertex (lemma1.invariant1); a near-flat tet whose double
-    // ratio (summary ratio_max 2.65) disagrees with the exact checker's pass.
+    // Tilted near-planar facets (issue #3, helper D), still failing after 6c82303: a cap
+    // subfacet is encroached by a wall vertex after a subfacet refinement
+    // (lemma1.invariant1).
     "refine-hexprism-tilted-invariant1.poly",
-    "refine-hexprism-ratio-summary-vs-checker.poly",
-    // Refinement with size control on non-dyadic coordinates (issue #3; refine_seq /
-    // kernel, helpers A and C): a tet circumcenter lands 0.0175 from an existing facet
-    // vertex while the tet's circumradius is 0.0597 (lemma1.invariant4); the same cube
-    // scaled to [0,1]^3 passes, and without the audit the mesh passes every exact check.
-    "refine-cube-nondyadic-size-invariant4.poly",
 };
 
 class Replay : public ::testing::Test {
