@@ -65,8 +65,8 @@ std::string check_tet(const VolumeMesh& m, TetId t, VertexId extra) {
 
 }  // namespace
 
-void audit_insertion(const VolumeMesh& m, VertexId v, const std::vector<TetId>& star,
-                     const char* what, double size2, double h) {
+void audit_encroachment(const VolumeMesh& m, VertexId v, const std::vector<TetId>& star,
+                        const char* what) {
   const TetStore& s = m.dt.store();
   for (const TetId t : star) {
     if (auto r = check_tet(m, t, kNoVertex); !r.empty())
@@ -76,6 +76,11 @@ void audit_insertion(const VolumeMesh& m, VertexId v, const std::vector<TetId>& 
     if (auto r = check_tet(m, s.neighbour(t, k), v); !r.empty())
       throw RefineError(r + " (after refining a " + what + ")");
   }
+}
+
+void audit_edges(const VolumeMesh& m, VertexId v, const std::vector<TetId>& star,
+                 const char* what, double size2, double h) {
+  const TetStore& s = m.dt.store();
   const mpq_class hb = mpq_class(h * (1 - 0x1p-40));
   const mpq_class h2 = hb * hb;
   for (const TetId t : star)

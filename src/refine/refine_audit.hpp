@@ -25,9 +25,14 @@
 
 namespace pdr::refine {
 
-// what: "tet", "subfacet" or "subsegment" (the refined element); h as above.
-void audit_insertion(const VolumeMesh& m, VertexId v, const std::vector<TetId>& star,
-                     const char* what, double size2, double h);
+// what: "tet", "subfacet" or "subsegment" (the refined element). Invariant 1 on `star`,
+// the current star of v in T (SeqRefinement audits it once the rounding repairs of v's
+// insertion step are done, surface_flat.hpp rule 2).
+void audit_encroachment(const VolumeMesh& m, VertexId v, const std::vector<TetId>& star,
+                        const char* what);
+// Invariants 2-4 on `star`, the tets created by v's insertion (right after it); h as above.
+void audit_edges(const VolumeMesh& m, VertexId v, const std::vector<TetId>& star,
+                 const char* what, double size2, double h);
 
 // Global audit (tests): every subfacet of D is a face of T, flags obey the parity rule
 // across every face, and no subsegment or subfacet is encroached by any vertex of the tets

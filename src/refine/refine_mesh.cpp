@@ -1,6 +1,8 @@
 // VolumeMesh queries (paper §1.1); see refine_mesh.hpp.
 #include "refine/refine_mesh.hpp"
 
+#include <algorithm>
+
 namespace pdr::refine {
 
 void VolumeMesh::map_vertex(VertexId v, std::uint32_t surf_vertex) {
@@ -61,6 +63,18 @@ VertexId commit_point(VolumeMesh& m, const Cavity& c, std::uint32_t surf_vertex,
     m.inside[t] = static_cast<std::uint8_t>((s.is_ghost(n) ? 0 : m.inside[n]) ^ (flip ? 1 : 0));
   }
   return v;
+}
+
+void vertex_star(const VolumeMesh& m, VertexId v, TetId start, std::vector<TetId>& star) {
+  const TetStore& s = m.dt.store();
+  star.assign(1, start);
+  // The tets of the star are adjacent across their faces that hold v.
+  for (std::size_t i = 0; i < star.size(); ++i)
+    for (int k = 0; k < 4; ++k) {
+      if (s.vertex(star[i], k) == v) continue;
+      const TetId n = s.neighbour(star[i], k);
+      if (std::find(star.begin(), star.end(), n) == star.end()) star.push_back(n);
+    }
 }
 
 }  // namespace pdr::refine

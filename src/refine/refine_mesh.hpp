@@ -96,4 +96,7 @@ struct VolumeMesh {
 VertexId commit_point(VolumeMesh& m, const Cavity& c, std::uint32_t surf_vertex,
                       std::vector<TetId>& star);
 
+// The star of vertex v in T (ghost tets included), from `start`, a live tet incident to v.
+void vertex_star(const VolumeMesh& m, VertexId v, TetId start, std::vector<TetId>& star);
+
 }  // namespace pdr::refine

@@ -98,6 +98,10 @@ class Refiner {
   std::uint64_t steps_ = 0;
   Cavity cav_, cav2_;
   std::vector<TetId> star_;
+  // The vertices of the current insertion step (after_insert), each with what it refined;
+  // a star of one of them.
+  std::vector<std::pair<VertexId, const char*>> step_;
+  std::vector<TetId> around_;
   std::vector<std::pair<std::array<VertexId, 4>, std::string>> refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
@@ -238,20 +242,66 @@ class Refiner {
     return true;
   }
 
-  void after_insert(VertexId v, const char* what, double size2) {
-    if (o_.audit) {
-      if (o_.admissible) {
-        audit_insertion(m_, v, star_, what, size2, res_.stats.h);
-      } else {
-        try {
-          audit_insertion(m_, v, star_, what, size2, res_.stats.h);
-        } catch (const RefineError& e) {
-          if (res_.stats.audit_failures++ == 0) res_.stats.audit_note = e.what();
-        }
-      }
+  // A Lemma 1 audit check: it throws on admissible domains; outside the theory the first
+  // failure is noted.
+  template <class Check>
+  void audited(Check check) {
+    if (o_.admissible) {
+      check();
+      return;
     }
+    try {
+      check();
+    } catch (const RefineError& e) {
+      if (res_.stats.audit_failures++ == 0) res_.stats.audit_note = e.what();
+    }
+  }
+
+  // The current star of step_[i]'s vertex into around_ (star_ while the step has one).
+  void step_star(std::size_t i) {
+    if (step_.size() == 1) {
+      around_ = star_;
+      return;
+    }
+    const Location loc = m_.dt.locate(pt(step_[i].first), m_.dt.last_tet());
+    vertex_star(m_, step_[i].first, loc.tet, around_);
+  }
+
+  // Rounding repair at step_[i]'s vertex (issue #3, surface_flat.hpp rule 2): refines a
+  // subfacet face of a tet of its star whose fourth vertex lies strictly inside the
+  // subfacet's equatorial ball, as the bad-tet queue would. True when that added a vertex.
+  bool repair(std::size_t i) {
+    step_star(i);
+    const TetStore& s = m_.dt.store();
+    for (const TetId t : around_) {
+      if (s.is_ghost(t)) continue;
+      const auto f = encroached_subfacet_face(m_, t);
+      if (!f) continue;
+      const std::size_t before = m_.dt.num_points();
+      refine_subfacet(*f, t, t);  // its vertex joins step_ (no recursion)
+      if (m_.dt.num_points() > before) return true;
+    }
+    return false;
+  }
+
+  // After each commit: invariants 2-4 on the new edges, the new tets queued. The step's
+  // first call then repairs rounding encroachment at once at each vertex of the step (the
+  // repairs' vertices join the step; the vertex cap bounds them) and only then audits
+  // invariant 1 on each one's current star: every tet the step created holds one of them.
+  void after_insert(VertexId v, const char* what, double size2) {
+    if (o_.audit) audited([&] { audit_edges(m_, v, star_, what, size2, res_.stats.h); });
     queue_star();
     if (guard_.active()) find_encroached(m_, star_, enc_);
+    step_.emplace_back(v, what);
+    if (step_.size() > 1) return;  // a repair's vertex
+    for (std::size_t i = 0; i < step_.size() && !at_cap();)
+      if (!repair(i)) ++i;
+    if (o_.audit)
+      for (std::size_t i = 0; i < step_.size(); ++i) {
+        step_star(i);
+        audited([&] { audit_encroachment(m_, step_[i].first, around_, step_[i].second); });
+      }
+    step_.clear();
   }
 
   // Fig. 2 Refine(s) (refine_split.hpp: where); the reason when the guard refuses.

@@ -21,7 +21,9 @@
 // circumcenter (Fig. 2 Refine(f) for an encroached subfacet). For (1) that point is within
 // rounding of the centre of the subfacet's equatorial sphere, so strictly inside the
 // sliver's circumsphere (centred on the subfacet's axis): the sliver is gone. For (2) the
-// subfacet is gone. Each step inserts a vertex; the refinement's vertex cap bounds them.
+// subfacet is gone. Refinement repairs (2) at once, within each insertion step and before
+// its Lemma 1 audit (refine_seq.cpp), and through the bad-tet queue as a fallback. Each
+// step inserts a vertex; the refinement's vertex cap bounds them.
 #pragma once
 
 #include <cstdint>
@@ -35,5 +37,7 @@ namespace pdr::refine {
 // subfacets of a facet f with (1) the fourth vertex a vertex of f's triangulation, or (2)
 // the fourth vertex strictly inside the subfacet's equatorial ball; nullopt if none.
 std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t);
+// The same for (2) alone.
+std::optional<std::uint32_t> encroached_subfacet_face(const VolumeMesh& m, TetId t);
 
 }  // namespace pdr::refine
