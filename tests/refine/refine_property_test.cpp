@@ -190,12 +190,7 @@ TEST(RefineProperty, MeshPassesEveryCheck) {
 
 // Replays of tests/regress/refine-*.poly, one test each (registered below). A case of a
 // known open bug is registered DISABLED_ (gtest lists it) with the bug named here.
-const std::vector<std::string> kKnownBugs = {
-    // Tilted near-planar facets (issue #3, helper D), still failing after 6c82303: a cap
-    // subfacet is encroached by a wall vertex after a subfacet refinement
-    // (lemma1.invariant1).
-    "refine-hexprism-tilted-invariant1.poly",
-};
+const std::vector<std::string> kKnownBugs = {};
 
 class Replay : public ::testing::Test {
  public:
