@@ -174,6 +174,12 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
     summary.set("leftovers", left);
     code = kExitNotGuaranteed;
   }
+  if (!rr.stop_reason.empty() && code == kExitOk) {
+    // Every tet is below B, but the refinement stopped early: the size bounds (--size,
+    // --max-volume) may be unmet, so the run does not claim success.
+    summary.set("quality", "NOT GUARANTEED: " + rr.stop_reason);
+    code = kExitNotGuaranteed;
+  }
 
   write_outputs(mesh, args.prefix, formats, timer, summary);
 

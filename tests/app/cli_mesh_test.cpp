@@ -164,4 +164,15 @@ TEST_F(Cli, MeshThatCannotBeFinishedExits3AndSaysWhy) {
   EXPECT_TRUE(fs::exists(path("m.ele")));
 }
 
+// Stopped by the vertex cap with every tet already below B: the size bound is unmet, so
+// the run still says "not guaranteed" (exit 3), never success.
+TEST_F(Cli, MeshStoppedByTheCapBeforeTheSizeBoundExits3) {
+  const Outcome r = run("mesh " + data("box.poly") + " -o " + path("c") +
+                        " --max-volume 0.001 --max-vertices 1 --json");
+  ASSERT_EQ(r.code, 3) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["quality"].get<std::string>().find("refine.cap"), std::string::npos) << r.out;
+  EXPECT_EQ(j["check"], "pass") << r.out;
+}
+
 }  // namespace
