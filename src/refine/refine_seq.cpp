@@ -133,8 +133,11 @@ class Refiner {
     if (m_.dt.num_points() < res_.stats.vertex_cap) return false;
     res_.stop_reason = "refine.cap: " + std::to_string(m_.dt.num_points()) +
                        " vertices reached the cap of " + std::to_string(res_.stats.vertex_cap) +
-                       " (derived from the input size, its bounding box, d, B and the size "
-                       "bounds); the domain is probably outside the theory";
+                       (o_.max_vertices != 0
+                            ? std::string(" (--max-vertices)")
+                            : std::string(" (derived from the input size, its bounding box, d, "
+                                          "B and the size bounds); the domain is probably "
+                                          "outside the theory"));
     return true;
   }
 

@@ -8,9 +8,8 @@
 // exact checker (src/check, with the domain) passes every check.
 //
 // Cases: 50 by default (PDR_REFINE_CASES=N for more; RC_PARAMS=seed=S reproduces a run).
-// Rotated regular hexagons (tilted walls with rounded coordinates) are generated only with
-// PDR_REFINE_TILTED=1 while issue #3's tilted-facet failures remain open (about one case in
-// 150-400 fails: see the DISABLED_ replays below); integer hexagons always are.
+// Hexagonal prisms come as integer hexagons and as rotated regular hexagons (tilted walls
+// with rounded coordinates: vertices constructed on them are a few ulps off the plane).
 // A failing case is written, after every shrinking step, to the file named by
 // PDR_REFINE_COUNTEREXAMPLE (default: refine-counterexample.poly in the working
 // directory); the last one written is the shrunk domain, with its options in a comment:
@@ -176,7 +175,7 @@ TEST(RefineProperty, GeneratedDomainsAreAdmissibleAndRoundTrip) {
 
 TEST(RefineProperty, MeshPassesEveryCheck) {
   check_property("MeshPassesEveryCheck", cases(), [] {
-    const Plc plc = *gen_admissible_domain(std::getenv("PDR_REFINE_TILTED") != nullptr);
+    const Plc plc = *gen_admissible_domain();
     const Sizing z = *gen_sizing(plc);
     const std::string why = mesh_failure(plc, z);
     if (why.empty()) return;
