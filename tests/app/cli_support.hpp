@@ -24,12 +24,13 @@ namespace fs = std::filesystem;
 
 struct Outcome {
   int code = -1;
-  std::string out;  // stdout and stderr together
+  std::string out;  // stdout (and stderr, unless asked otherwise)
 };
 
-inline Outcome run(const std::string& args) {
+// with_stderr: capture stderr too (false: stdout only, e.g. to parse --json).
+inline Outcome run(const std::string& args, bool with_stderr = true) {
   Outcome r;
-  const std::string cmd = std::string(PDR_BINARY) + " " + args + " 2>&1";
+  const std::string cmd = std::string(PDR_BINARY) + " " + args + (with_stderr ? " 2>&1" : "");
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
   std::array<char, 4096> buf{};

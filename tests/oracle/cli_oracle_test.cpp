@@ -3,16 +3,13 @@
 // --vtu OUT.vtu writes the per-tet fields, and a bad --explain is a usage error.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "app/cli_support.hpp"
 #include "io/io_test_util.hpp"
 
 namespace {
@@ -21,22 +18,8 @@ using pdr::io::test::read_text;
 using pdr::io::test::ScratchDir;
 using pdr::io::test::write_text;
 
-struct Outcome {
-  int code = -1;
-  std::string out;
-};
-
-Outcome pdr_run(const std::string& args, bool with_stderr = true) {
-  Outcome r;
-  const std::string cmd = std::string(PDR_BINARY) + " " + args + (with_stderr ? " 2>&1" : "");
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using pdr::cli_test::Outcome;
+using pdr::cli_test::run;
 
 // The unit cube in 6 Kuhn tets (1-based, as TetGen writes), with vertex 8 = (1,1,1) pushed
 // out to (1.25,1.25,1.25) along the diagonal: every tet stays positive, none stays Delaunay.
@@ -51,7 +34,7 @@ void write_mesh(const ScratchDir& dir) {
 TEST(CheckCli, JsonFollowsTheDocumentedSchema) {
   ScratchDir dir;
   write_mesh(dir);
-  const Outcome r = pdr_run("check " + dir / "k" + " --ratio 2 --json", false);
+  const Outcome r = run("check " + dir / "k" + " --ratio 2 --json", false);
   EXPECT_EQ(r.code, 1) << r.out;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["schema_version"], 1);
@@ -79,19 +62,19 @@ TEST(CheckCli, JsonFollowsTheDocumentedSchema) {
 TEST(CheckCli, ExplainDescribesOneTet) {
   ScratchDir dir;
   write_mesh(dir);
-  const Outcome t = pdr_run("check " + dir / "k" + " --ratio 2 --explain 0");
+  const Outcome t = run("check " + dir / "k" + " --ratio 2 --explain 0");
   EXPECT_EQ(t.code, 1) << t.out;
   EXPECT_NE(t.out.find("explain tet 0: vertices 0 1 3 7"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("orientation (exact): positive"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("delaunay.empty_sphere: vertex"), std::string::npos) << t.out;
 
-  const Outcome j = pdr_run("check " + dir / "k" + " --explain 5 --json", false);
+  const Outcome j = run("check " + dir / "k" + " --explain 5 --json", false);
   const nlohmann::json e = nlohmann::json::parse(j.out)["explain"];
   EXPECT_EQ(e["tet"], 5);
   EXPECT_GT(e["inside_total"].get<int>(), 0);
   EXPECT_EQ(e["orientation"], 1);
 
-  const Outcome bad = pdr_run("check " + dir / "k" + " --explain 6");
+  const Outcome bad = run("check " + dir / "k" + " --explain 6");
   EXPECT_EQ(bad.code, 2) << bad.out;
   EXPECT_NE(bad.out.find("the mesh has 6 tets"), std::string::npos) << bad.out;
 }
@@ -99,14 +82,14 @@ TEST(CheckCli, ExplainDescribesOneTet) {
 TEST(CheckCli, VtuHoldsThePerTetFields) {
   ScratchDir dir;
   write_mesh(dir);
-  const Outcome r = pdr_run("check " + dir / "k" + " --ratio 2 --vtu " + dir / "k.vtu");
+  const Outcome r = run("check " + dir / "k" + " --ratio 2 --vtu " + dir / "k.vtu");
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(r.out.find("wrote " + dir / "k.vtu"), std::string::npos) << r.out;
   const std::string vtu = read_text(dir / "k.vtu");
   for (const char* name : {"\"ratio\"", "\"failed_checks\"", "\"fail:delaunay.empty_sphere\""})
     EXPECT_NE(vtu.find(name), std::string::npos) << name;
   // The mesh itself reads back unchanged through pdr's own reader.
-  EXPECT_EQ(pdr_run("check " + dir / "k.vtu" + " --json", false).code, 1);
+  EXPECT_EQ(run("check " + dir / "k.vtu" + " --json", false).code, 1);
 }
 
 }  // namespace
