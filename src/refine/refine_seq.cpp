@@ -6,16 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <initializer_list>
 #include <limits>
 #include <optional>
-#include <span>
 #include <sstream>
 
 #include "geom/construct.hpp"
-#include "geom/encroach.hpp"
-#include "mesh/tables.hpp"
 #include "refine/refine_audit.hpp"
+#include "refine/refine_closure.hpp"
 #include "refine/refine_guard.hpp"
 #include "refine/refine_quality.hpp"
 #include "refine/refine_split.hpp"
@@ -192,50 +189,6 @@ class Refiner {
     refused_.push_back({verts(t), std::move(why)});
   }
 
-  // Subsegments that are edges of the given tets (the closure of p's cavity: its conflict
-  // tets and ring) and whose closed diametral ball holds p (Fig. 2 "p encroaches
-  // subsegment s ∈ C_p").
-  using Tets = std::initializer_list<std::span<const TetId>>;
-  std::optional<std::uint32_t> encroached_subsegment(Tets tets, const Point& p) const {
-    const TetStore& s = m_.dt.store();
-    auto scan = [&](TetId t) -> std::optional<std::uint32_t> {
-      if (s.is_ghost(t)) return std::nullopt;
-      const VertexId* v = s.vertices(t);
-      for (const auto& e : tables::kEdgeVertex) {
-        const auto sub = m_.subsegment(v[e[0]], v[e[1]]);
-        if (sub && in_diametral_ball(pt(v[e[0]]), pt(v[e[1]]), p) != Sign::Negative)
-          return sub;
-      }
-      return std::nullopt;
-    };
-    for (const auto& list : tets)
-      for (const TetId t : list)
-        if (auto r = scan(t)) return r;
-    return std::nullopt;
-  }
-
-  // The subfacet of largest circumradius among the faces of the given tets whose closed
-  // equatorial ball holds p (Fig. 2 "f <- max radius(f) that p encroaches").
-  std::optional<std::uint32_t> encroached_subfacet(Tets tets, const Point& p) const {
-    std::optional<std::uint32_t> best;
-    double best_r2 = -1;
-    auto scan = [&](TetId t) {
-      for (int f = 0; f < 4; ++f) {
-        const auto sf = m_.face_subfacet(t, f);
-        if (!sf) continue;
-        const Subfacet& x = m_.surf.subfacet(*sf);
-        const Point &a = m_.surf.point(x.v[0]), &b = m_.surf.point(x.v[1]),
-                    &cc = m_.surf.point(x.v[2]);
-        if (in_equatorial_ball(a, b, cc, p) == Sign::Negative) continue;
-        const double r2 = construct::triangle_circumradius2(a, b, cc);  // choice only
-        if (r2 > best_r2) best_r2 = r2, best = *sf;
-      }
-    };
-    for (const auto& list : tets)
-      for (const TetId t : list) scan(t);
-    return best;
-  }
-
   // Locates p from `hint` and builds its cavity into `c`; false when p is a vertex.
   bool plan(const Point& p, TetId hint, Cavity& c, bool& outside) {
     const Location loc = m_.dt.locate(p, hint);
@@ -364,7 +317,7 @@ class Refiner {
       give_up(t, "refine.subfacet: circumcenter " + fmt(fc.p) + " is already a vertex");
       return;
     }
-    if (const auto s = encroached_subsegment({cav2_.conflict, cav2_.ring}, fc.p)) {
+    if (const auto s = closure_encroached_subsegment(m_, {cav2_.conflict, cav2_.ring}, fc.p)) {
       if (auto why = split(*s, hint)) give_up(t, std::move(*why));
       return;
     }
@@ -397,11 +350,11 @@ class Refiner {
 
   bool refine_own_element(TetId t, const Point& p) {
     const std::span<const TetId> own(&t, 1);
-    if (const auto s = encroached_subsegment({own}, p)) {
+    if (const auto s = closure_encroached_subsegment(m_, {own}, p)) {
       if (auto why = split(*s, t)) refuse(t, std::move(*why));
       return true;
     }
-    if (const auto f = encroached_subfacet({own}, p)) {
+    if (const auto f = closure_encroached_subfacet(m_, {own}, p)) {
       refine_subfacet(*f, t, t);
       return true;
     }
@@ -425,11 +378,11 @@ class Refiner {
       refuse(t, "refine.tet: circumcenter " + fmt(p) + " is already a vertex");
       return;
     }
-    if (const auto s = encroached_subsegment({cav_.conflict, cav_.ring}, p)) {
+    if (const auto s = closure_encroached_subsegment(m_, {cav_.conflict, cav_.ring}, p)) {
       if (auto why = split(*s, t)) refuse(t, std::move(*why));
       return;
     }
-    if (const auto f = encroached_subfacet({cav_.conflict, cav_.ring}, p)) {
+    if (const auto f = closure_encroached_subfacet(m_, {cav_.conflict, cav_.ring}, p)) {
       refine_subfacet(*f, t, t);
       return;
     }
