@@ -189,14 +189,12 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
     co.threads = args.threads;
     const check::Report report = check::check_mesh(check::view_of(mesh), an.domain.plc, co);
     timer.lap("check");
-    nlohmann::json failed = nlohmann::json::array();
-    for (const auto& c : report.checks)
-      if (c.status == check::Status::Fail) failed.push_back(c.id);
     // quality.ratio failing is what exit 3 already reports; so is encroachment on an
     // inadmissible domain (Lemma 1 needs the angle bounds); anything else is a bug.
     bool other = false, expected = false;
-    for (const auto& id : failed) {
-      const std::string s = id.get<std::string>();
+    for (const auto& c : report.checks) {
+      if (c.status != check::Status::Fail) continue;
+      const std::string& s = c.id;
       const bool outside_theory = !opt.admissible && s.rfind("encroachment.", 0) == 0;
       expected = expected || outside_theory;
       other = other || (s != "quality.ratio" && !outside_theory);
@@ -207,14 +205,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
       summary.set("check_report", check::to_text(report));
       code = kExitNotGuaranteed;
     }
-    summary.set("check", report.ok() ? "pass" : "FAIL");
-    if (!report.ok()) {
-      summary.set("check_failed", failed);
-      if (other) {
-        summary.set("check_report", check::to_text(report));
-        code = kExitViolations;
-      }
-    }
+    record_check(report, other, summary);
+    if (other) code = kExitViolations;
   } else {
     summary.set("check", "skipped (--no-check)");
   }

@@ -77,15 +77,8 @@ int triangulate_write_check(std::vector<Point> points, const std::string& source
     opt.threads = threads;
     const check::Report report = check::check_mesh(check::view_of(mesh), opt);
     timer.lap("check");
-    nlohmann::json failed = nlohmann::json::array();
-    for (const auto& c : report.checks)
-      if (c.status == check::Status::Fail) failed.push_back(c.id);
-    summary.set("check", report.ok() ? "pass" : "FAIL");
-    if (!report.ok()) {
-      summary.set("check_failed", failed);
-      summary.set("check_report", check::to_text(report));
-      code = kExitViolations;
-    }
+    record_check(report, true, summary);
+    if (!report.ok()) code = kExitViolations;
   } else {
     summary.set("check", "skipped (--no-check)");
   }
@@ -104,6 +97,19 @@ void write_outputs(const MeshData& mesh, const std::string& prefix,
     for (auto& p : io::output_paths(prefix, f)) written.push_back(p);
   summary.set("written", written);
   timer.lap("write");
+}
+
+std::vector<std::string> record_check(const check::Report& report, bool with_report,
+                                      Summary& summary) {
+  std::vector<std::string> failed;
+  for (const auto& c : report.checks)
+    if (c.status == check::Status::Fail) failed.push_back(c.id);
+  summary.set("check", report.ok() ? "pass" : "FAIL");
+  if (!report.ok()) {
+    summary.set("check_failed", failed);
+    if (with_report) summary.set("check_report", check::to_text(report));
+  }
+  return failed;
 }
 
 void finish_summary(const PhaseTimer& timer, Summary& summary) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/summary.hpp"
+#include "check/check.hpp"
 #include "geom/point.hpp"
 #include "io/mesh_io.hpp"
 
@@ -19,6 +20,12 @@ std::vector<io::MeshFormat> parse_formats(const std::vector<std::string>& names)
 void write_outputs(const MeshData& mesh, const std::string& prefix,
                    const std::vector<io::MeshFormat>& formats, PhaseTimer& timer,
                    Summary& summary);
+
+// The checker's verdict in the summary: "check" (pass/FAIL) and, when it failed,
+// "check_failed" (the ids) and, with `with_report`, "check_report" (the text). Returns the
+// failed ids.
+std::vector<std::string> record_check(const check::Report& report, bool with_report,
+                                      Summary& summary);
 
 // The summary's closing entries: seconds per phase and the peak memory.
 void finish_summary(const PhaseTimer& timer, Summary& summary);

@@ -14,6 +14,7 @@
 #include "check/fields.hpp"
 #include "geom/construct.hpp"
 #include "geom/exact.hpp"
+#include "geom/point_text.hpp"
 #include "geom/predicates.hpp"
 
 namespace pdr::check {
@@ -82,13 +83,6 @@ TetExplanation explain_tet(const MeshView& mesh, const Report& report, std::uint
 }
 
 namespace {
-
-std::string point_text(const Point& p) {
-  std::ostringstream o;
-  o.precision(17);
-  o << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-  return o.str();
-}
 
 std::string list_text(const std::vector<std::uint32_t>& v, std::uint64_t total) {
   std::ostringstream s;

@@ -7,17 +7,11 @@
 
 #include "geom/encroach.hpp"
 #include "geom/exact.hpp"
+#include "geom/point_text.hpp"
 #include "mesh/tables.hpp"
 
 namespace pdr::refine {
 namespace {
-
-std::string fmt(const Point& p) {
-  std::ostringstream os;
-  os.precision(17);
-  os << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
-  return os.str();
-}
 
 // Invariant 1 on tet t: its subsegment edges and subfacet faces against its own vertices
 // and `extra`. Returns an empty string when it holds.
@@ -39,8 +33,8 @@ std::string check_tet(const VolumeMesh& m, TetId t, VertexId extra) {
       if (in_diametral_ball(m.dt.point(a), m.dt.point(b), m.dt.point(w)) != Sign::Positive)
         return {};
       return "lemma1.invariant1: subsegment " + std::to_string(a) + "-" + std::to_string(b) +
-             " " + fmt(m.dt.point(a)) + "-" + fmt(m.dt.point(b)) + " is encroached by vertex " +
-             std::to_string(w) + " " + fmt(m.dt.point(w));
+             " " + point_text(m.dt.point(a)) + "-" + point_text(m.dt.point(b)) +
+             " is encroached by vertex " + std::to_string(w) + " " + point_text(m.dt.point(w));
     });
     if (!r.empty()) return r;
   }
@@ -54,9 +48,9 @@ std::string check_tet(const VolumeMesh& m, TetId t, VertexId extra) {
           Sign::Positive)
         return {};
       return "lemma1.invariant1: subfacet " + std::to_string(a) + "," + std::to_string(b) +
-             "," + std::to_string(c) + " " + fmt(m.dt.point(a)) + fmt(m.dt.point(b)) +
-             fmt(m.dt.point(c)) + " is encroached by vertex " + std::to_string(w) + " " +
-             fmt(m.dt.point(w));
+             "," + std::to_string(c) + " " + point_text(m.dt.point(a)) + point_text(m.dt.point(b)) +
+             point_text(m.dt.point(c)) + " is encroached by vertex " + std::to_string(w) + " " +
+             point_text(m.dt.point(w));
     });
     if (!r.empty()) return r;
   }
@@ -92,7 +86,7 @@ void audit_edges(const VolumeMesh& m, VertexId v, const std::vector<TetId>& star
         os.precision(17);
         os << "lemma1.invariant" << (what[0] == 't' ? 4 : what[0] == 's' ? 2 : 3)
            << ": refining a " << what << " of squared size " << size2 << " created edge "
-           << v << "-" << w << " " << fmt(m.dt.point(v)) << "-" << fmt(m.dt.point(w))
+           << v << "-" << w << " " << point_text(m.dt.point(v)) << "-" << point_text(m.dt.point(w))
            << " shorter than h = " << h;
         throw RefineError(os.str());
       }

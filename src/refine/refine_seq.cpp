@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "geom/construct.hpp"
+#include "geom/point_text.hpp"
 #include "refine/refine_audit.hpp"
 #include "refine/refine_closure.hpp"
 #include "refine/refine_guard.hpp"
@@ -27,13 +28,6 @@ struct Entry {
   TetId t;
   std::array<VertexId, 4> v;
 };
-
-std::string fmt(const Point& p) {
-  std::ostringstream os;
-  os.precision(17);
-  os << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
-  return os.str();
-}
 
 class Refiner {
  public:
@@ -278,7 +272,7 @@ class Refiner {
     const Point p = m_.surf.point(r.vertex);
     bool outside = false;
     if (!plan(p, hint, cav_, outside))
-      throw RefineError("refine.split: the split point " + fmt(p) + " of " + name +
+      throw RefineError("refine.split: the split point " + point_text(p) + " of " + name +
                         " is already a vertex");
     const VertexId v = commit_point(m_, cav_, r.vertex, star_);
     ++res_.stats.subsegment_splits;
@@ -314,7 +308,7 @@ class Refiner {
     }
     bool outside = false;
     if (!plan(fc.p, hint, cav2_, outside)) {
-      give_up(t, "refine.subfacet: circumcenter " + fmt(fc.p) + " is already a vertex");
+      give_up(t, "refine.subfacet: circumcenter " + point_text(fc.p) + " is already a vertex");
       return;
     }
     if (const auto s = closure_encroached_subsegment(m_, {cav2_.conflict, cav2_.ring}, fc.p)) {
@@ -343,7 +337,7 @@ class Refiner {
     // Each new subfacet is on two tets of the star.
     if (seen != 2 * fresh.size())
       throw RefineError("volume.conformity: after inserting the subfacet circumcenter " +
-                        fmt(pt(v)) + ", " + std::to_string(fresh.size()) +
+                        point_text(pt(v)) + ", " + std::to_string(fresh.size()) +
                         " new subfacets but " + std::to_string(seen) +
                         " tet faces at the vertex are subfacets (expected twice as many)");
   }
@@ -375,7 +369,7 @@ class Refiner {
     if (guard_.active() && refine_own_element(t, p)) return;
     bool outside = false;
     if (!plan(p, t, cav_, outside)) {
-      refuse(t, "refine.tet: circumcenter " + fmt(p) + " is already a vertex");
+      refuse(t, "refine.tet: circumcenter " + point_text(p) + " is already a vertex");
       return;
     }
     if (const auto s = closure_encroached_subsegment(m_, {cav_.conflict, cav_.ring}, p)) {
@@ -387,7 +381,7 @@ class Refiner {
       return;
     }
     if (outside) {
-      refuse(t, "refine.outside: circumcenter " + fmt(p) +
+      refuse(t, "refine.outside: circumcenter " + point_text(p) +
                     " lies outside the domain but encroaches no subsegment or subfacet of "
                     "its cavity's closure");
       return;
