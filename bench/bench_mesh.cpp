@@ -11,7 +11,7 @@
 // rusage) and peak RSS (its ru_maxrss: the whole process, input and output included, for
 // both alike). Then the bench reads both meshes with pdr's reader and computes, the same
 // way for both, the tet count, the largest radius-edge ratio (double, display) and the
-// number of tets with ratio >= 2 decided exactly (refine/refine_quality.hpp).
+// number of tets with ratio >= 2 decided exactly (refine/quality.hpp).
 //
 // Usage: bench_mesh [--pdr PATH] [--tetgen PATH] [--data DIR] [--runs N] [--no-check]
 //                   [--keep] [CASE.poly:V ...]
@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "io/mesh_io.hpp"
-#include "refine/refine_quality.hpp"
+#include "refine/quality.hpp"
 
 namespace fs = std::filesystem;
 

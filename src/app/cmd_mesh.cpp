@@ -1,8 +1,8 @@
 // `pdr mesh DOMAIN.poly -o PREFIX ...`: the sequential mesher (paper §2.1 initialization,
 // §3 SeqRefinement), then the exact checker (src/check) on the written mesh.
 //
-// Phases (each timed): analyze (validation, admissibility, d: plc_analyze.hpp), surface
-// (D_o: surface_init.hpp), initial (T_o: refine_initial.hpp), refine (refine_seq.hpp),
+// Phases (each timed): analyze (validation, admissibility, d: domain/analysis.hpp), surface
+// (D_o: surface/init.hpp), initial (T_o: refine/initial.hpp), refine (refine/seq_refinement.hpp),
 // write (only the tets inside Ω, and the subfacets as boundary faces with their facets'
 // markers), check (check_mesh with the domain and --ratio B, unless --no-check).
 // Exit codes (exit_codes.hpp): 0 ok; 1 the checker found violations (a bug); 2 invalid
@@ -22,15 +22,15 @@
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "delaunay/export.hpp"
+#include "domain/analysis.hpp"
 #include "geom/input_range.hpp"
 #include "io/error.hpp"
 #include "io/mesh_io.hpp"
-#include "refine/plc_analyze.hpp"
-#include "refine/refine_initial.hpp"
-#include "refine/refine_quality.hpp"
-#include "refine/refine_seq.hpp"
-#include "refine/refine_split.hpp"
-#include "refine/surface_init.hpp"
+#include "refine/initial.hpp"
+#include "refine/quality.hpp"
+#include "refine/seq_refinement.hpp"
+#include "refine/split.hpp"
+#include "surface/init.hpp"
 
 namespace pdr::app {
 namespace {
@@ -112,10 +112,10 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   PhaseTimer timer;
   check_range(plc);
   const auto formats = parse_formats(args.formats);
-  refine::DomainAnalysis an = refine::analyze(plc);
+  domain::DomainAnalysis an = domain::analyze(plc);
   summary.set("domain", plc.source);
   summary.set("admissible", an.report.admissible);
-  const nlohmann::json report = refine::to_json(an.report);
+  const nlohmann::json report = domain::to_json(an.report);
   summary.set("admissibility_violations", report.at("admissibility").at("violations"));
   // Facets accepted as planar only within the documented relative tolerance (README).
   summary.set("planarity", report.at("planarity"));
@@ -128,7 +128,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   opt.admissible = an.report.admissible;
   opt.acute_vertices = refine::acute_vertices(an.report);  // the guards' shells
   opt.progress = opt.progress || isatty(STDERR_FILENO) == 1;
-  refine::SurfaceInit si = refine::init_surface(an);
+  surface::SurfaceInit si = surface::init_surface(an);
   summary.set("surface_vertices", si.mesh.vertex_count());
   summary.set("subfacets", si.mesh.live_subfacets());
   timer.lap("surface");
@@ -226,7 +226,7 @@ int run_mesh(const MeshArgs& args) {
     summary.print(args.json);
     std::cerr << "pdr: " << e.what() << "\n";
     return kExitInternal;
-  } catch (const refine::SurfaceError& e) {
+  } catch (const surface::SurfaceError& e) {
     summary.set("error", e.what());
     summary.print(args.json);
     std::cerr << "pdr: " << e.what() << "\n";

@@ -10,7 +10,7 @@
 
 #include "app/summary.hpp"
 #include "mesh/plc.hpp"
-#include "refine/refine_seq.hpp"
+#include "refine/seq_refinement.hpp"
 
 namespace pdr::app {
 

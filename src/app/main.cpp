@@ -1,5 +1,5 @@
 // `pdr`: the command line. Parses the options once into each command's argument struct
-// (STYLE §14), runs the command, and maps failures to exit codes (exit_codes.hpp):
+// (docs/design.md §14), runs the command, and maps failures to exit codes (exit_codes.hpp):
 // malformed input and bad usage exit 2 with "file:line: problem; what to do".
 #include <CLI/CLI.hpp>
 

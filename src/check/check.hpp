@@ -72,7 +72,7 @@ struct MeshView {
 
 MeshView view_of(const MeshData& mesh);
 
-// Parameters, passed by value (STYLE §14).
+// Parameters, passed by value (docs/design.md §14).
 struct Options {
   std::optional<double> ratio_bound;  // B: quality.ratio requires R < B * lmin
   std::optional<double> min_edge;     // h: quality.shortest_edge requires lmin > h

@@ -1,4 +1,4 @@
-// The individual checkers, each a pure function over a read-only Context (STYLE §8), named
+// The individual checkers, each a pure function over a read-only Context (docs/design.md §8), named
 // after the invariant it encodes and returning a CheckResult (violations as data).
 //
 // A Context holds what several checkers share, computed once by check_mesh (check.cpp):

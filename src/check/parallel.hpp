@@ -3,7 +3,7 @@
 // parallel_blocks hands out blocks of [0, n) through an atomic counter. A Collector per
 // worker keeps the `max` smallest keys (element ids) of its own stream; merging the workers'
 // lists and keeping the `max` smallest gives exactly the first `max` violations of the
-// whole loop, whatever the thread count or timing: reports are reproducible (STYLE §12).
+// whole loop, whatever the thread count or timing: reports are reproducible (docs/design.md §12).
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Cavity: the Bowyer-Watson cavity of a point, as a value built read-only (paper §1.2,
-// §4.1; STYLE §10).
+// §4.1; docs/design.md §10).
 //
 // For a point p and a seed tet in conflict with p, CavityBuilder::build() collects, by a
 // breadth-first search over faces that never modifies the store:

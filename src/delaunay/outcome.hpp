@@ -1,4 +1,4 @@
-// Outcome: what an attempt to insert a point did (STYLE §11).
+// Outcome: what an attempt to insert a point did (docs/design.md §11).
 //
 // The Delaunay kernel produces Inserted and Duplicate. The later layers produce the rest,
 // and they are declared here now so that every caller switches over one closed enum:

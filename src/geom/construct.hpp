@@ -1,4 +1,4 @@
-// Floating-point constructions: *where* to insert a point, never whether (STYLE §6).
+// Floating-point constructions: *where* to insert a point, never whether (docs/design.md §6).
 //
 // Refinement inserts circumcenters and midpoints (paper §2-3: a skinny tetrahedron is
 // split at its circumcenter, an encroached subsegment at its midpoint, an encroached

@@ -1,4 +1,4 @@
-// Probes of the floating-point environment pdr_geom was compiled in (STYLE §7).
+// Probes of the floating-point environment pdr_geom was compiled in (docs/design.md §7).
 //
 // The functions below are compiled inside pdr_geom, with its flags, and never inlined
 // into callers (separate translation unit, no LTO), so a test calling them sees exactly

@@ -8,7 +8,7 @@
 // sign is that of D0, else that of the first nonzero C(p) with p taken in this order:
 // lex-largest point first. Equal points (a precondition violation) are ranked by argument
 // position, the later argument counting as larger, so the result is still a function of
-// the arguments alone. The order never depends on indices or addresses (STYLE §5).
+// the arguments alone. The order never depends on indices or addresses (docs/design.md §5).
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // MaybeId: an id of the surface mesh D (a subsegment or subfacet) or none, returned by the
-// VolumeMesh lookups (refine_mesh.hpp) that the refinement calls for every edge and face
+// VolumeMesh lookups (refine/volume_mesh.hpp) that the refinement calls for every edge and face
 // of every cavity. Used like std::optional<std::uint32_t> (`if (x)`, `*x`, `has_value()`,
 // conversion to the optional), but held in one 32-bit word with kNone for "none": an
 // optional's separate flag byte, stored alone and then read back with the id as one

@@ -1,7 +1,7 @@
 // RapidCheck properties of the Delaunay kernel, with shrinking:
 //   - the result passes every brute-force oracle (oracle.hpp);
 //   - two random insertion orders give the identical canonical tet set (uniqueness of the
-//     SoS-Delaunay tetrahedralization, STYLE §5);
+//     SoS-Delaunay tetrahedralization, docs/design.md §5);
 //   - degenerate inputs (collinear, coplanar, too few) are reported, and only then.
 // Generators favour degeneracy: small integer grids (cospherical, coplanar and collinear
 // subsets everywhere, duplicates), lattice points of one sphere, and dyadic doubles of

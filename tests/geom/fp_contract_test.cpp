@@ -1,4 +1,4 @@
-// The fp-contract guard (STYLE §7): pdr_geom must be compiled without floating-point
+// The fp-contract guard (docs/design.md §7): pdr_geom must be compiled without floating-point
 // contraction, and its error-free transformations must be exact as compiled there.
 #include <gmpxx.h>
 #include <gtest/gtest.h>

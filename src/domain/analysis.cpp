@@ -1,0 +1,193 @@
+// The domain analysis in one call (paper §1.1, §2.1), and its report as text and JSON; see
+// domain/analysis.hpp.
+
+#include "domain/analysis.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "domain/validate.hpp"
+
+namespace pdr::domain {
+
+namespace {
+
+std::string num(double x, const char* fmt = "%.6g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, x);
+  return buf;
+}
+
+std::string at_line(std::size_t line) { return line ? " (line " + std::to_string(line) + ")" : ""; }
+
+std::string describe(const PlcDomain& dom, ComponentKind k, std::uint32_t id) {
+  const auto& lines = dom.plc.point_lines;
+  auto vline = [&](std::uint32_t v) { return at_line(v < lines.size() ? lines[v] : 0); };
+  switch (k) {
+    case ComponentKind::Vertex: return "vertex " + std::to_string(id) + vline(id);
+    case ComponentKind::Segment: {
+      const DomainSegment& s = dom.segments[id];
+      return "segment " + std::to_string(s.a) + vline(s.a) + " - " + std::to_string(s.b) + vline(s.b);
+    }
+    case ComponentKind::Facet: return "facet " + std::to_string(id) + at_line(dom.plc.facets[id].line);
+  }
+  return "?";
+}
+
+std::string describe(const AngleRecord& r) {
+  std::ostringstream o;
+  o << angle_kind_name(r.kind) << " " << num(r.degrees, "%.4f") << " deg";
+  if (r.in_facet) o << " (inside facet)";
+  o << ":";
+  if (r.vertex >= 0) o << " at vertex " << r.vertex << at_line(r.vertex_line) << ";";
+  for (std::size_t i = 0; i < r.segments.size(); ++i)
+    o << " segment " << r.segments[i][0] << at_line(r.segment_lines[i][0]) << " - "
+      << r.segments[i][1] << at_line(r.segment_lines[i][1]) << ";";
+  for (std::size_t i = 0; i < r.facets.size(); ++i)
+    o << " facet " << r.facets[i] << at_line(r.facet_lines[i]) << ";";
+  std::string s = o.str();
+  if (!s.empty() && s.back() == ';') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const FeatureSize& fs) {
+  DomainReport r;
+  const Plc& plc = dom.plc;
+  r.source = plc.source;
+  r.input_vertices = plc.points.size();
+  r.vertices = dom.vertex_count();
+  r.segments = dom.segments.size();
+  for (const DomainSegment& s : dom.segments) r.standalone_segments += s.sides.empty();
+  r.facets = dom.face_count();
+  for (const DomainFacet& f : dom.facets) r.triangles += f.tris.size();
+  r.shells = dom.shells;
+  r.volume_holes = plc.holes.size();
+  for (const PlcFacet& f : plc.facets) r.facet_holes += f.holes.size();
+  r.regions = plc.regions.size();
+  bool first = true;
+  for (std::uint32_t v = 0; v < plc.points.size(); ++v) {
+    if (!dom.on_boundary[v]) continue;
+    for (int k = 0; k < 3; ++k) {
+      r.bbox_lo[k] = first ? plc.points[v][k] : std::min(r.bbox_lo[k], plc.points[v][k]);
+      r.bbox_hi[k] = first ? plc.points[v][k] : std::max(r.bbox_hi[k], plc.points[v][k]);
+    }
+    first = false;
+  }
+  r.planarity_tolerance = dom.options.planarity_tolerance;
+  for (std::uint32_t f : dom.tolerance_facets)
+    r.tolerance_facets.push_back({f, plc.facets[f].line, dom.facets[f].plane.max_deviation});
+  r.admissible = adm.admissible;
+  r.violations = adm.violations;
+  r.angle_stats = adm.stats;
+  r.feature = fs;
+  if (std::isfinite(fs.min_distance))
+    r.closest = describe(dom, fs.first_kind, fs.first) + " and " + describe(dom, fs.second_kind, fs.second);
+  return r;
+}
+
+std::string render_text(const DomainReport& r) {
+  std::ostringstream o;
+  o << "domain " << (r.source.empty() ? "(unnamed)" : r.source) << "\n";
+  o << "  components: " << r.vertices << " vertices (" << r.input_vertices << " in the input), "
+    << r.segments << " segments (" << r.standalone_segments << " standalone), " << r.facets
+    << " facets (" << r.triangles << " triangles), " << r.shells << " closed shells\n";
+  o << "  holes: " << r.volume_holes << " volume, " << r.facet_holes << " facet; regions: "
+    << r.regions << "\n";
+  o << "  bounding box: [" << num(r.bbox_lo[0]) << ", " << num(r.bbox_lo[1]) << ", "
+    << num(r.bbox_lo[2]) << "] .. [" << num(r.bbox_hi[0]) << ", " << num(r.bbox_hi[1]) << ", "
+    << num(r.bbox_hi[2]) << "]\n";
+  if (r.tolerance_facets.empty()) {
+    o << "  planarity: every facet exactly planar\n";
+  } else {
+    o << "  planarity: " << r.tolerance_facets.size()
+      << " facet(s) planar only within the relative tolerance " << num(r.planarity_tolerance)
+      << ":\n";
+    for (const ToleranceFacet& t : r.tolerance_facets)
+      o << "    facet " << t.facet << at_line(t.line) << ": deviation " << num(t.deviation, "%.3g")
+        << "\n";
+  }
+  o << "  admissible (paper 1.1, related components at 90..270 deg): "
+    << (r.admissible ? "yes" : "no") << "\n";
+  for (int k = 0; k < angle_kinds; ++k) {
+    const AngleStats& s = r.angle_stats[k];
+    o << "    " << angle_kind_name(static_cast<AngleKind>(k)) << ": " << s.pairs << " pairs";
+    if (s.pairs) o << ", " << num(s.min_degrees, "%.4f") << " .. " << num(s.max_degrees, "%.4f") << " deg";
+    o << "\n";
+  }
+  if (!r.violations.empty()) {
+    o << "  violations (" << r.violations.size() << "):\n";
+    for (const AngleRecord& v : r.violations) o << "    " << describe(v) << "\n";
+  }
+  if (std::isfinite(r.feature.d))
+    o << "  d (paper 2.1) = " << num(r.feature.d, "%.10g") << " = min distance "
+      << num(r.feature.min_distance, "%.10g") << " / sqrt 2, between " << r.closest << "\n";
+  else
+    o << "  d (paper 2.1): no two unrelated components\n";
+  return o.str();
+}
+
+nlohmann::json to_json(const DomainReport& r) {
+  using nlohmann::json;
+  json j;
+  j["source"] = r.source;
+  j["counts"] = {{"input_vertices", r.input_vertices}, {"vertices", r.vertices},
+                 {"segments", r.segments},             {"standalone_segments", r.standalone_segments},
+                 {"facets", r.facets},                 {"triangles", r.triangles},
+                 {"shells", r.shells},                 {"volume_holes", r.volume_holes},
+                 {"facet_holes", r.facet_holes},       {"regions", r.regions}};
+  j["bounding_box"] = {{"min", r.bbox_lo}, {"max", r.bbox_hi}};
+  json tol = json::array();
+  for (const ToleranceFacet& t : r.tolerance_facets)
+    tol.push_back({{"facet", t.facet}, {"line", t.line}, {"deviation", t.deviation}});
+  j["planarity"] = {{"tolerance", r.planarity_tolerance}, {"tolerance_facets", tol}};
+  json stats = json::object();
+  for (int k = 0; k < angle_kinds; ++k) {
+    const AngleStats& s = r.angle_stats[k];
+    json e = {{"pairs", s.pairs}};
+    if (s.pairs) {
+      e["min_degrees"] = s.min_degrees;
+      e["max_degrees"] = s.max_degrees;
+    }
+    stats[angle_kind_name(static_cast<AngleKind>(k))] = e;
+  }
+  json viol = json::array();
+  for (const AngleRecord& v : r.violations) {
+    json e = {{"kind", angle_kind_name(v.kind)}, {"degrees", v.degrees}, {"in_facet", v.in_facet}};
+    if (v.vertex >= 0) e["vertex"] = {{"id", v.vertex}, {"line", v.vertex_line}};
+    json segs = json::array();
+    for (std::size_t i = 0; i < v.segments.size(); ++i)
+      segs.push_back({{"ends", v.segments[i]}, {"lines", v.segment_lines[i]}});
+    e["segments"] = segs;
+    json facs = json::array();
+    for (std::size_t i = 0; i < v.facets.size(); ++i)
+      facs.push_back({{"facet", v.facets[i]}, {"line", v.facet_lines[i]}});
+    e["facets"] = facs;
+    viol.push_back(e);
+  }
+  j["admissibility"] = {{"admissible", r.admissible}, {"angles", stats}, {"violations", viol}};
+  json d = {{"d", nullptr}, {"min_distance", nullptr}};
+  if (std::isfinite(r.feature.d)) {
+    d["d"] = r.feature.d;
+    d["min_distance"] = r.feature.min_distance;
+    d["closest"] = {{"first", {{"kind", component_kind_name(r.feature.first_kind)}, {"id", r.feature.first}}},
+                    {"second", {{"kind", component_kind_name(r.feature.second_kind)}, {"id", r.feature.second}}},
+                    {"description", r.closest}};
+  }
+  j["feature_size"] = d;
+  return j;
+}
+
+DomainAnalysis analyze(const Plc& plc, const PlcOptions& options) {
+  DomainAnalysis a{build_domain(plc, options), {}};
+  a.report = make_report(a.domain, check_admissibility(a.domain), feature_size(a.domain));
+  return a;
+}
+
+DomainReport analyze_domain(const Plc& plc, const PlcOptions& options) {
+  return analyze(plc, options).report;
+}
+
+}  // namespace pdr::domain

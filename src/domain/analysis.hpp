@@ -1,0 +1,66 @@
+// The domain analysis in one call: validation (domain/validate.hpp), admissibility
+// (domain/angles.hpp, paper §1.1) and the distance d (domain/distance.hpp, paper §2.1).
+//
+// DomainReport: what the analysis found, as a value that can be printed (render_text) or
+// serialised (to_json). It holds no reference to the domain: every component it names
+// carries its source lines.
+
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "domain/angles.hpp"
+#include "domain/distance.hpp"
+#include "domain/domain.hpp"
+#include "mesh/plc.hpp"
+
+namespace pdr::domain {
+
+struct ToleranceFacet {
+  std::uint32_t facet = 0;
+  std::size_t line = 0;
+  double deviation = 0;  // max vertex distance to the fitted plane / facet diameter
+};
+
+struct DomainReport {
+  std::string source;
+  std::size_t input_vertices = 0;       // points in the file
+  std::size_t vertices = 0;             // boundary vertices (used by some polygon)
+  std::size_t segments = 0;             // after splitting at interior vertices
+  std::size_t standalone_segments = 0;  // segments on no facet
+  std::size_t facets = 0;               // faces (facets with area)
+  std::size_t triangles = 0;            // of the facets' triangulations
+  std::size_t shells = 0;               // connected closed surfaces
+  std::size_t volume_holes = 0, facet_holes = 0, regions = 0;
+  Point bbox_lo{}, bbox_hi{};           // of the boundary vertices
+  double planarity_tolerance = 0;
+  std::vector<ToleranceFacet> tolerance_facets;  // accepted as planar within tolerance
+  bool admissible = true;
+  std::vector<AngleRecord> violations;
+  std::array<AngleStats, angle_kinds> angle_stats{};
+  FeatureSize feature;                  // d and the closest unrelated pair
+  std::string closest;                  // that pair, in words with source lines
+};
+
+DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const FeatureSize& fs);
+
+// Multi-line human-readable summary, ending with a newline.
+std::string render_text(const DomainReport& r);
+nlohmann::json to_json(const DomainReport& r);
+
+struct DomainAnalysis {
+  PlcDomain domain;
+  DomainReport report;
+};
+
+// Throws InputError when the PLC is not a valid polyhedral domain. An inadmissible domain
+// is not an error: report.admissible is false and report.violations lists why.
+DomainAnalysis analyze(const Plc& plc, const PlcOptions& options = {});
+DomainReport analyze_domain(const Plc& plc, const PlcOptions& options = {});
+
+}  // namespace pdr::domain

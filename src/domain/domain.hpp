@@ -1,0 +1,91 @@
+// PlcDomain: a validated polyhedral domain and its related components (paper §1.1).
+//
+// build_domain (domain/validate.hpp) turns a Plc into this structure or throws InputError.
+// What a PlcDomain guarantees:
+//   - vertices are pairwise distinct; every facet with a polygon of >= 3 vertices (a
+//     "face") is planar, exactly or within the documented tolerance (domain/plane.hpp);
+//   - segments are the edges of the facets' polygons, plus the 2-vertex polygons, each
+//     split at every input vertex lying in its interior (so collinear overlapping edges
+//     share their common pieces), unique and undirected (a < b);
+//   - each face is triangulated (triangles with input vertices as corners, conforming to
+//     its segments, holes removed): the facet "as the kernel sees it";
+//   - components meet only in shared vertices and segments (no crossing facets, segments
+//     or stray vertices);
+//   - every segment bounds an even number of facet sides (a segment inside a face counts
+//     as two sides), so the boundary is a closed surface mod 2 and the domain is the set
+//     of points from which a ray crosses it an odd number of times (voids are even);
+//   - every triangle knows which of its sides faces the domain (`inward`), and the facet
+//     sides around each segment are sorted by angle with the inside wedges marked;
+//   - volume hole points lie strictly inside some closed shell, in a void (even parity),
+//     off every facet.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "domain/plane.hpp"
+#include "mesh/plc.hpp"
+
+namespace pdr::domain {
+
+// Parameters of the domain analysis (docs/design.md §14: one small struct, by value).
+struct PlcOptions {
+  // Relative planarity tolerance (domain/plane.hpp). Classification only.
+  double planarity_tolerance = 1e-9;
+};
+
+struct FacetTri {
+  std::array<std::uint32_t, 3> v{};             // global vertex ids, counter-clockwise in
+                                                // the facet's projection
+  std::array<std::int32_t, 3> nbr{-1, -1, -1};  // triangle of this facet across the edge
+                                                // opposite v[i]; -1 if none
+  std::array<bool, 3> on_segment{};             // that edge is a segment
+  std::int8_t inward = 0;  // +1: the domain is on the side (v1-v0)x(v2-v0) points to
+};
+
+struct DomainFacet {
+  bool is_face = false;                 // has a polygon of >= 3 vertices
+  FacetPlane plane;                     // valid when is_face
+  std::vector<std::uint32_t> vertices;  // sorted ids: corners of tris, and 1-vertex polygons
+  std::vector<FacetTri> tris;           // the facet's region (empty unless is_face)
+  std::vector<std::uint32_t> segments;  // sorted ids of the segments the facet contains
+  int shell = -1;                       // connected component of the boundary surface
+};
+
+// One side of a face along a segment: the triangle of that face on the segment.
+struct HalfFacet {
+  std::uint32_t facet = 0;
+  std::uint32_t tri = 0;      // index into facets[facet].tris
+  std::uint32_t apex = 0;     // the triangle's vertex off the segment
+  std::int8_t dir = 0;        // +1 when the triangle runs a->b (its normal then points to
+                              // the positive rotation about a->b), -1 for b->a
+  std::int8_t inside_after = 0;  // +1 when the wedge from this side to the next one, turning
+                                 // positively about a->b, lies inside the domain
+};
+
+struct DomainSegment {
+  std::uint32_t a = 0, b = 0;           // a < b
+  std::vector<HalfFacet> sides;         // sorted by angle about a->b (cyclic)
+  std::vector<std::uint32_t> facets;    // distinct facets containing the segment, sorted
+};
+
+struct PlcDomain {
+  Plc plc;                                           // the input, as given
+  PlcOptions options;
+  std::vector<DomainFacet> facets;                   // parallel to plc.facets
+  std::vector<DomainSegment> segments;               // sorted by (a, b)
+  std::vector<std::vector<std::uint32_t>> vertex_segments;  // per vertex, sorted
+  std::vector<std::vector<std::uint32_t>> vertex_facets;    // faces containing it, sorted
+  std::vector<bool> on_boundary;                     // vertex is a component of the boundary
+  std::size_t shells = 0;                            // closed surface components
+  std::vector<std::uint32_t> tolerance_facets;       // faces planar only within tolerance
+
+  std::optional<std::uint32_t> find_segment(std::uint32_t a, std::uint32_t b) const;
+  std::size_t face_count() const;
+  std::size_t vertex_count() const;  // boundary vertices
+};
+
+}  // namespace pdr::domain

@@ -1,0 +1,327 @@
+// Which side of the boundary is the domain (paper §1.1: "a closed polyhedral domain,
+// possibly having holes and voids"), and the volume hole checks (step 7 of build_domain).
+//
+// The boundary is closed mod 2 (every segment bounds an even number of facet sides), so a
+// ray from a point crosses it an odd number of times iff the point is enclosed by an odd
+// number of closed surfaces; pdr's domain Ω is that set (a void inside a body is even).
+// Orientation:
+//   1. the facet sides around each segment are sorted by angle about a->b (exact:
+//      orient3d against a reference side, then pairwise);
+//   2. triangles are connected through their facet (same inward side) and around each
+//      segment, where the wedges between consecutive sides alternate in / out of Ω, so
+//      inward(next) = -inward(this) * dir(this) * dir(next);
+//   3. each connected component ("shell") is seeded by an exact ray from a rational
+//      point inside one of its triangles along the axis of that triangle's largest normal
+//      component, counting proper crossings (orient3d / orient2d of the rational point,
+//      domain/exact.hpp: a floating-point filter, then GMP); a ray that touches an edge or a
+//      vertex, or runs in a triangle's plane, is discarded and another point is tried.
+// Hole points are tested the same way with rays from the point itself (axis rays first,
+// then fixed pseudo-random directions), counting crossings per shell.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "domain/bvh.hpp"
+#include "domain/exact.hpp"
+#include "domain/intersect.hpp"
+#include "domain/steps.hpp"
+#include "geom/predicates.hpp"
+
+namespace pdr::domain::detail {
+
+namespace {
+
+struct TriRef {
+  std::uint32_t facet, tri;
+};
+
+enum class Hit : std::uint8_t { Miss, Cross, Degenerate };
+
+// The ray from o along direction dir * e_axis against the closed triangle abc.
+// Precondition: o lies in no triangle but the skipped one. The ray meets the triangle's
+// plane at o + t dir e_axis with t = -n.(o - a) / (dir n_axis), n = (b-a)x(c-a); it
+// crosses the triangle iff t > 0 and the projection of o (dropping the axis) lies inside
+// the projected triangle, whose orientation is sign(n_axis). Touching an edge or a
+// vertex, or running inside the triangle's plane, is degenerate.
+Hit classify_axis(const RatPoint& o, int axis, int dir, const Point& a, const Point& b,
+                  const Point& c) {
+  const Sign nk = orient2d_dropping(axis, a, b, c);
+  const Sign so = orient3d_rat(a, b, c, o);
+  if (nk == Sign::Zero) return so == Sign::Zero ? Hit::Degenerate : Hit::Miss;
+  if (so == Sign::Zero) return Hit::Miss;  // o in the plane but outside the triangle
+  if (to_int(so) != -dir * to_int(nk)) return Hit::Miss;  // the plane is behind o
+  const Sign e1 = orient2d_rat(axis, a, b, o) * nk, e2 = orient2d_rat(axis, b, c, o) * nk,
+             e3 = orient2d_rat(axis, c, a, o) * nk;
+  if (e1 == Sign::Negative || e2 == Sign::Negative || e3 == Sign::Negative) return Hit::Miss;
+  if (e1 == Sign::Zero || e2 == Sign::Zero || e3 == Sign::Zero) return Hit::Degenerate;
+  return Hit::Cross;
+}
+
+// The segment o -> f (f beyond every bounding box) against the closed triangle abc, all
+// input doubles. Precondition: o lies in no triangle.
+Hit classify_segment(const Point& o, const Point& f, const Point& a, const Point& b, const Point& c) {
+  const Sign so = orient3d(a, b, c, o), sf = orient3d(a, b, c, f);
+  if (so == Sign::Zero && sf == Sign::Zero) return Hit::Degenerate;
+  if (so == sf || so == Sign::Zero || sf == Sign::Zero) return Hit::Miss;
+  const Sign s1 = orient3d(o, f, a, b), s2 = orient3d(o, f, b, c), s3 = orient3d(o, f, c, a);
+  const bool neg = s1 == Sign::Negative || s2 == Sign::Negative || s3 == Sign::Negative;
+  const bool pos = s1 == Sign::Positive || s2 == Sign::Positive || s3 == Sign::Positive;
+  if (neg && pos) return Hit::Miss;
+  if (s1 == Sign::Zero || s2 == Sign::Zero || s3 == Sign::Zero) return Hit::Degenerate;
+  return Hit::Cross;
+}
+
+class RayCaster {
+ public:
+  explicit RayCaster(const PlcDomain& dom) : dom_(dom) {
+    for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
+      for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t) tris_.push_back({f, t});
+    std::vector<Box> boxes(tris_.size());
+    for (std::size_t i = 0; i < tris_.size(); ++i)
+      for (std::uint32_t v : tri(tris_[i]).v) {
+        boxes[i].add(dom.plc.points[v]);
+        all_.add(dom.plc.points[v]);
+      }
+    bvh_ = Bvh(std::move(boxes));
+  }
+  const std::vector<TriRef>& tris() const { return tris_; }
+  const FacetTri& tri(const TriRef& r) const { return dom_.facets[r.facet].tris[r.tri]; }
+  const Box& bounds() const { return all_; }
+  const Bvh& bvh() const { return bvh_; }
+
+  // Crossings per shell of the ray from o along dir * e_axis, skipping triangle `skip`
+  // (numbered as in tris()); false if the ray is degenerate. Boxes are filtered with the
+  // floating-point shadow of o widened by its error (a superset of the exact test).
+  bool cast_axis(const RatPoint& o, int axis, int dir, std::int64_t skip,
+                 std::vector<int>& crossings) const {
+    crossings.assign(dom_.shells, 0);
+    bool ok = true;
+    auto keep = [&](const Box& b) {
+      for (int j = 0; j < 3; ++j) {
+        if (j == axis) continue;
+        if (o.d[j] + o.err < b.lo[j] || o.d[j] - o.err > b.hi[j]) return false;
+      }
+      return dir > 0 ? o.d[axis] - o.err <= b.hi[axis] : o.d[axis] + o.err >= b.lo[axis];
+    };
+    bvh_.for_each_kept(keep, [&](std::uint32_t i) {
+      if (!ok || static_cast<std::int64_t>(i) == skip) return;
+      const Hit h = classify_axis(o, axis, dir, point(i, 0), point(i, 1), point(i, 2));
+      if (h == Hit::Degenerate) ok = false;
+      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
+    });
+    return ok;
+  }
+
+  // Crossings per shell of the segment o -> f (f beyond every box); every triangle is
+  // tested (used only for the rare hole points whose axis rays are all degenerate).
+  bool cast_segment(const Point& o, const Point& f, std::vector<int>& crossings) const {
+    crossings.assign(dom_.shells, 0);
+    for (std::uint32_t i = 0; i < tris_.size(); ++i) {
+      const Hit h = classify_segment(o, f, point(i, 0), point(i, 1), point(i, 2));
+      if (h == Hit::Degenerate) return false;
+      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
+    }
+    return true;
+  }
+
+ private:
+  const Point& point(std::uint32_t i, int k) const { return dom_.plc.points[tri(tris_[i]).v[k]]; }
+
+  const PlcDomain& dom_;
+  std::vector<TriRef> tris_;
+  Bvh bvh_;
+  Box all_;
+};
+
+void sort_sides(const std::vector<Point>& pts, DomainSegment& s) {
+  if (s.sides.size() < 2) return;
+  const Point &p = pts[s.a], &q = pts[s.b], &w0 = pts[s.sides[0].apex];
+  const int drop = nondegenerate_drop(p, q, w0);
+  auto half = [&](const HalfFacet& h) {
+    if (h.apex == s.sides[0].apex) return 0;
+    const Sign o = orient3d(p, q, w0, pts[h.apex]);
+    if (o != Sign::Zero) return o == Sign::Positive ? 0 : 1;
+    if (orient2d_dropping(drop, p, q, w0) == orient2d_dropping(drop, p, q, pts[h.apex]))
+      throw std::logic_error("plc_orient: two facet sides overlap along a segment");
+    return 1;  // the opposite half-plane: angle pi
+  };
+  std::stable_sort(s.sides.begin() + 1, s.sides.end(), [&](const HalfFacet& x, const HalfFacet& y) {
+    const int hx = half(x), hy = half(y);
+    if (hx != hy) return hx < hy;
+    return orient3d(p, q, pts[x.apex], pts[y.apex]) == Sign::Positive;
+  });
+}
+
+}  // namespace
+
+void orient_boundary(PlcDomain& dom) {
+  const std::vector<Point>& pts = dom.plc.points;
+  for (DomainSegment& s : dom.segments) sort_sides(pts, s);
+
+  // Components of the triangle graph.
+  std::vector<std::size_t> offset(dom.facets.size() + 1, 0);
+  for (std::size_t f = 0; f < dom.facets.size(); ++f)
+    offset[f + 1] = offset[f] + dom.facets[f].tris.size();
+  const std::size_t n = offset.back();
+  std::vector<std::int8_t> inward(n, 0);
+  std::vector<int> comp(n, -1);
+  // Around-segment links: side i to side i+1, with the factor -dir_i * dir_{i+1}.
+  std::vector<std::vector<std::pair<std::size_t, std::int8_t>>> links(n);
+  for (const DomainSegment& s : dom.segments)
+    for (std::size_t i = 0; i < s.sides.size() && s.sides.size() >= 2; ++i) {
+      const HalfFacet &x = s.sides[i], &y = s.sides[(i + 1) % s.sides.size()];
+      const std::size_t tx = offset[x.facet] + x.tri, ty = offset[y.facet] + y.tri;
+      const auto factor = static_cast<std::int8_t>(-x.dir * y.dir);
+      links[tx].push_back({ty, factor});
+      links[ty].push_back({tx, factor});
+    }
+  auto facet_of = [&](std::size_t g) {
+    return static_cast<std::uint32_t>(std::upper_bound(offset.begin(), offset.end(), g) - offset.begin() - 1);
+  };
+  std::vector<std::size_t> seeds;
+  for (std::size_t g0 = 0; g0 < n; ++g0) {
+    if (comp[g0] >= 0) continue;
+    const int c = static_cast<int>(seeds.size());
+    seeds.push_back(g0);
+    std::vector<std::size_t> stack{g0};
+    comp[g0] = c;
+    while (!stack.empty()) {
+      const std::size_t g = stack.back();
+      stack.pop_back();
+      const std::uint32_t f = facet_of(g);
+      const FacetTri& t = dom.facets[f].tris[g - offset[f]];
+      auto visit = [&](std::size_t h) {
+        if (comp[h] < 0) {
+          comp[h] = c;
+          stack.push_back(h);
+        }
+      };
+      for (std::int32_t nb : t.nbr)
+        if (nb >= 0) visit(offset[f] + static_cast<std::size_t>(nb));
+      for (const auto& [h, factor] : links[g]) visit(h);
+    }
+  }
+  dom.shells = seeds.size();
+  for (std::size_t f = 0; f < dom.facets.size(); ++f)
+    if (!dom.facets[f].tris.empty()) dom.facets[f].shell = comp[offset[f]];
+
+  const RayCaster rays(dom);
+  for (std::size_t c = 0; c < seeds.size(); ++c) {
+    // Seed: a ray from a rational point inside a triangle of the component.
+    std::size_t g = seeds[c];
+    std::int8_t seed_inward = 0;
+    for (int attempt = 0; attempt < 200 && seed_inward == 0; ++attempt) {
+      if (attempt > 0 && attempt % 8 == 0) {  // try another triangle of the component
+        for (std::size_t h = g + 1; h < n; ++h)
+          if (comp[h] == static_cast<int>(c)) {
+            g = h;
+            break;
+          }
+      }
+      const std::uint32_t f = facet_of(g);
+      const FacetTri& t = dom.facets[f].tris[g - offset[f]];
+      const Point &a = pts[t.v[0]], &b = pts[t.v[1]], &cc = pts[t.v[2]];
+      const int axis = nondegenerate_drop(a, b, cc);
+      const Sign nk = orient2d_dropping(axis, a, b, cc);
+      const mpq_class w1(3 + 2 * attempt), w2(5 + 3 * attempt), w3(7 + 5 * attempt);
+      const mpq_class sum = w1 + w2 + w3;
+      QPoint q;
+      for (int k = 0; k < 3; ++k)
+        q[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
+      std::vector<int> crossings;
+      // RayCaster numbers triangles as g.
+      if (!rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g), crossings)) continue;
+      int total = 0;
+      for (int x : crossings) total += x;
+      // The ray leaves along +axis, i.e. to the side of the normal iff n_axis > 0; that
+      // side is in the domain iff the ray crosses the boundary an odd number of times.
+      seed_inward = static_cast<std::int8_t>((nk == Sign::Positive ? 1 : -1) * (total % 2 ? 1 : -1));
+    }
+    if (seed_inward == 0) throw std::logic_error("plc_orient: no non-degenerate ray found");
+    inward[g] = seed_inward;
+    std::vector<std::size_t> stack{g};
+    while (!stack.empty()) {
+      const std::size_t x = stack.back();
+      stack.pop_back();
+      const std::uint32_t f = facet_of(x);
+      const FacetTri& t = dom.facets[f].tris[x - offset[f]];
+      auto visit = [&](std::size_t h, std::int8_t value) {
+        if (inward[h] == 0) {
+          inward[h] = value;
+          stack.push_back(h);
+        } else if (inward[h] != value) {
+          throw std::logic_error("plc_orient: inconsistent boundary orientation");
+        }
+      };
+      for (std::int32_t nb : t.nbr)
+        if (nb >= 0) visit(offset[f] + static_cast<std::size_t>(nb), inward[x]);
+      for (const auto& [h, factor] : links[x]) visit(h, static_cast<std::int8_t>(inward[x] * factor));
+    }
+  }
+  for (std::size_t f = 0; f < dom.facets.size(); ++f)
+    for (std::size_t t = 0; t < dom.facets[f].tris.size(); ++t)
+      dom.facets[f].tris[t].inward = inward[offset[f] + t];
+  for (DomainSegment& s : dom.segments)
+    for (HalfFacet& h : s.sides)
+      h.inside_after = static_cast<std::int8_t>(dom.facets[h.facet].tris[h.tri].inward * h.dir);
+}
+
+void check_volume_holes(const PlcDomain& dom) {
+  const Plc& plc = dom.plc;
+  if (plc.holes.empty()) return;
+  const RayCaster rays(dom);
+  for (std::size_t i = 0; i < plc.holes.size(); ++i) {
+    const Point& h = plc.holes[i];
+    const std::size_t line = i < plc.hole_lines.size() ? plc.hole_lines[i] : 0;
+    const std::string which = "volume hole point " + std::to_string(i + 1);
+    Box q;
+    q.add(h);
+    rays.bvh().for_overlapping(q, [&](std::uint32_t k) {
+      const FacetTri& t = rays.tri(rays.tris()[k]);
+      if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], h))
+        fail(plc, line,
+             "volume hole off facets: " + which + " lies on " +
+                 facet_name(plc, rays.tris()[k].facet) + "; move it into the void it marks");
+    });
+    std::vector<int> crossings;
+    bool done = false;
+    for (int attempt = 0; attempt < 6 && !done; ++attempt)
+      done = rays.cast_axis(make_rat(h), attempt / 2, attempt % 2 ? -1 : 1, -1, crossings);
+    // Rays in fixed pseudo-random directions (reproducible), long enough to leave every box.
+    const Box& all = rays.bounds();
+    double reach = 1;
+    for (int k = 0; k < 3; ++k)
+      reach += (all.hi[k] - all.lo[k]) + std::fabs(h[k] - 0.5 * (all.lo[k] + all.hi[k]));
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (int attempt = 0; attempt < 64 && !done; ++attempt) {
+      Point dir;
+      for (double& x : dir) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        x = static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
+      }
+      const double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+      Point far;
+      for (int k = 0; k < 3; ++k) far[k] = h[k] + 2 * reach * dir[k] / len;
+      done = rays.cast_segment(h, far, crossings);
+    }
+    if (!done) throw std::logic_error("plc_orient: no non-degenerate ray from a hole point");
+    int total = 0, enclosing = 0;
+    for (int x : crossings) {
+      total += x;
+      enclosing += x % 2;
+    }
+    if (enclosing == 0)
+      fail(plc, line,
+           "volume hole in a void: " + which +
+               " lies outside the domain's closed boundary; a volume hole point must mark "
+               "a void enclosed by the boundary. Move it into the void or remove it");
+    if (total % 2 == 1)
+      fail(plc, line,
+           "volume hole in a void: " + which +
+               " lies inside the domain (it is enclosed by an odd number of closed boundary "
+               "surfaces), not in a void; pdr's domain is what the closed boundary encloses, "
+               "so a hole point can only mark a void. Move it into the void or remove it");
+  }
+}
+
+}  // namespace pdr::domain::detail

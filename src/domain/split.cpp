@@ -1,0 +1,112 @@
+// Step 3 of build_domain: split polygon edges at input vertices lying in their interior
+// (paper §1.1: segments are "vertex-bounded"; a vertex inside an edge makes two segments).
+//
+// For every undirected edge of every polygon, the vertices used by any polygon that lie
+// in its open interior (exact: collinear and strictly between) are found through a
+// bounding-volume hierarchy over the vertices and inserted in order along the edge. Two
+// collinear edges that overlap thus share the pieces they have in common, and a vertex of
+// one facet inside another facet's edge (allowed by TetGen) splits that edge. A polygon
+// whose edge passes through one of its own vertices touches itself: an input error.
+#include <algorithm>
+#include <map>
+
+#include "domain/bvh.hpp"
+#include "domain/exact.hpp"
+#include "domain/steps.hpp"
+
+namespace pdr::domain::detail {
+
+namespace {
+
+using Edge = std::array<std::uint32_t, 2>;
+
+Edge undirected(std::uint32_t a, std::uint32_t b) { return {std::min(a, b), std::max(a, b)}; }
+
+}  // namespace
+
+void split_edges(const Plc& plc, std::vector<FacetPolys>& polys) {
+  const std::vector<Point>& pts = plc.points;
+  std::vector<std::uint32_t> used;
+  std::vector<Edge> edges;
+  for (const FacetPolys& fp : polys) {
+    for (const auto& loop : fp.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        used.push_back(loop[i]);
+        edges.push_back(undirected(loop[i], loop[(i + 1) % loop.size()]));
+      }
+    for (const auto& s : fp.segs) {
+      used.insert(used.end(), s.begin(), s.end());
+      edges.push_back(undirected(s[0], s[1]));
+    }
+    used.insert(used.end(), fp.points.begin(), fp.points.end());
+  }
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+
+  std::vector<Box> boxes(used.size());
+  for (std::size_t i = 0; i < used.size(); ++i) boxes[i].add(pts[used[i]]);
+  const Bvh bvh(std::move(boxes));
+
+  // Interior vertices of each edge, ordered from the smaller id to the larger.
+  std::map<Edge, std::vector<std::uint32_t>> inner;
+  for (const Edge& e : edges) {
+    const Point &a = pts[e[0]], &b = pts[e[1]];
+    Box q;
+    q.add(a);
+    q.add(b);
+    std::vector<std::uint32_t> found;
+    bvh.for_overlapping(q, [&](std::uint32_t item) {
+      const std::uint32_t v = used[item];
+      if (v == e[0] || v == e[1]) return;
+      if (collinear(a, b, pts[v]) && strictly_between(a, b, pts[v])) found.push_back(v);
+    });
+    if (found.empty()) continue;
+    int k = 0;
+    while (a[k] == b[k]) ++k;
+    const bool up = a[k] < b[k];
+    std::sort(found.begin(), found.end(), [&](std::uint32_t x, std::uint32_t y) {
+      return up ? pts[x][k] < pts[y][k] : pts[x][k] > pts[y][k];
+    });
+    inner.emplace(e, std::move(found));
+  }
+  if (inner.empty()) return;
+
+  // Appends the interior vertices of edge (u, w), in the direction u -> w.
+  auto append_inner = [&](std::uint32_t u, std::uint32_t w, std::vector<std::uint32_t>& out) {
+    auto it = inner.find(undirected(u, w));
+    if (it == inner.end()) return;
+    if (u < w) out.insert(out.end(), it->second.begin(), it->second.end());
+    else out.insert(out.end(), it->second.rbegin(), it->second.rend());
+  };
+  for (std::size_t f = 0; f < polys.size(); ++f) {
+    FacetPolys& fp = polys[f];
+    for (std::size_t l = 0; l < fp.loops.size(); ++l) {
+      std::vector<std::uint32_t>& loop = fp.loops[l];
+      std::vector<std::uint32_t> split;
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        split.push_back(loop[i]);
+        append_inner(loop[i], loop[(i + 1) % loop.size()], split);
+      }
+      std::vector<std::uint32_t> sorted(split);
+      std::sort(sorted.begin(), sorted.end());
+      if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
+        fail(plc, plc.facets[f].line,
+             "simple polygon: an edge of polygon " + std::to_string(fp.loop_index[l] + 1) +
+                 " of this facet passes through its own " + vertex_name(plc, *it) +
+                 ", so the polygon touches itself; split it into simple polygons");
+      loop = std::move(split);
+    }
+    std::vector<std::array<std::uint32_t, 2>> segs;
+    for (const auto& s : fp.segs) {
+      std::vector<std::uint32_t> chain{s[0]};
+      append_inner(s[0], s[1], chain);
+      chain.push_back(s[1]);
+      for (std::size_t i = 0; i + 1 < chain.size(); ++i) segs.push_back({chain[i], chain[i + 1]});
+    }
+    fp.segs = std::move(segs);
+  }
+}
+
+}  // namespace pdr::domain::detail

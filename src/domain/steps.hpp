@@ -1,0 +1,45 @@
+// The steps of build_domain (domain/validate.hpp), one per source file, and the wording of
+// their diagnostics. Internal to src/refine.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "domain/domain.hpp"
+#include "mesh/plc.hpp"
+
+namespace pdr::domain::detail {
+
+// A facet's polygons by kind, after the checks of step 2 (and after splitting, step 3).
+struct FacetPolys {
+  std::vector<std::vector<std::uint32_t>> loops;      // polygons of >= 3 vertices
+  std::vector<std::array<std::uint32_t, 2>> segs;     // 2-vertex polygons (split)
+  std::vector<std::uint32_t> points;                  // 1-vertex polygons
+  std::vector<std::size_t> loop_index;                // polygon number of each loop
+};
+
+// "vertex 7 (line 12)"; "facet 3 (line 40)" (0-based indices into the Plc).
+std::string vertex_name(const Plc& plc, std::uint32_t v);
+std::string facet_name(const Plc& plc, std::size_t f);
+[[noreturn]] void fail(const Plc& plc, std::size_t line, const std::string& message);
+
+// Step 1 and 2 (domain/build.cpp).
+void check_points(const Plc& plc);
+std::vector<FacetPolys> check_polygons(const Plc& plc);
+// Step 3 (domain/split.cpp).
+void split_edges(const Plc& plc, std::vector<FacetPolys>& polys);
+// Step 4 (domain/facets.cpp): fills facets[f].plane, .tris, .is_face; tolerance_facets.
+void triangulate_faces(const std::vector<FacetPolys>& polys, PlcDomain& dom);
+// Segments, incidences and vertex lists (domain/build.cpp).
+void build_structure(const std::vector<FacetPolys>& polys, PlcDomain& dom);
+// Step 5 (domain/crossing.cpp).
+void check_crossings(const PlcDomain& dom);
+// Step 6 (domain/build.cpp).
+void check_closed(const PlcDomain& dom);
+// Orientation and step 7 (domain/orient.cpp).
+void orient_boundary(PlcDomain& dom);
+void check_volume_holes(const PlcDomain& dom);
+
+}  // namespace pdr::domain::detail

@@ -1,0 +1,43 @@
+// Subfacets a tet of T asks to refine (issue #3: facets a few ulps off their planes).
+//
+// 1. Flat tets on a facet: a tet whose four vertices all lie on one facet of D. On an exactly
+//    planar facet with exactly coplanar vertices such a tet cannot exist (its orientation
+//    would be zero). On a tilted facet rounding puts constructed vertices a few ulps off the
+//    plane, and a near-cocircular quadruple a, b, c, d of the facet may then be a Delaunay
+//    sliver of T: two of its faces are subfacets (the facet's choice of diagonal,
+//    surface/chart.hpp), the other two lie on the facet too. On the domain's side it is a
+//    tet of the mesh with volume within rounding of zero and faces on the facet that are not
+//    subfacets.
+// 2. Encroached subfacet faces: a subfacet face abc of the tet whose equatorial ball
+//    strictly holds the tet's fourth vertex x. In exact arithmetic Lemma 1 excludes it; a
+//    vertex rounded onto a tilted facet can end a hair inside the equatorial sphere of a
+//    subfacet of a neighbouring facet that it is exactly on in the unrounded geometry.
+//    Completeness: if abc is a face of T and a vertex x off abc's plane is strictly inside
+//    its equatorial ball, x is the apex of the tet on abc on x's side (every sphere through
+//    a, b, c centred on that side holds the part of the equatorial ball on that side, so
+//    the tet's circumsphere would hold x otherwise); scanning the tets therefore finds
+//    every such pair.
+// Either way the refinement treats the tet as bad and refines the subfacet at its
+// circumcenter (Fig. 2 Refine(f) for an encroached subfacet). For (1) that point is within
+// rounding of the centre of the subfacet's equatorial sphere, so strictly inside the
+// sliver's circumsphere (centred on the subfacet's axis): the sliver is gone. For (2) the
+// subfacet is gone. Refinement repairs (2) at once, within each insertion step and before
+// its Lemma 1 audit (refine/seq_refinement.cpp), and through the bad-tet queue as a fallback. Each
+// step inserts a vertex; the refinement's vertex cap bounds them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "refine/volume_mesh.hpp"
+
+namespace pdr::refine {
+
+// The subfacet of largest circumradius among the faces of finite tet t that are
+// subfacets of a facet f with (1) the fourth vertex a vertex of f's triangulation, or (2)
+// the fourth vertex strictly inside the subfacet's equatorial ball; nullopt if none.
+std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t);
+// The same for (2) alone.
+std::optional<std::uint32_t> encroached_subfacet_face(const VolumeMesh& m, TetId t);
+
+}  // namespace pdr::refine

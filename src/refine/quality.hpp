@@ -1,0 +1,49 @@
+// Exact tetrahedron tests of the refinement loop (paper §1.1 "radius-edge ratio"; §3,
+// Fig. 2 "while ∃t: ratio(t) >= 2"; §3 "a slight modification ... to make sure that
+// tetrahedra larger than the value of the size function are refined").
+//
+//   ratio_at_least   R^2 >= B^2 lmin^2          (skinny: Fig. 2's loop condition)
+//   radius_above     R^2 >  L^2                 (size control, --size L)
+//   volume_above     volume6 > 6 V              (size control, --max-volume V)
+// With u = b-a, v = c-a, w = d-a, D = det[u,v,w] and X = |u|^2 v x w + |v|^2 w x u +
+// |w|^2 u x v, the circumcenter is a + X / (2D), so R^2 = |X|^2 / (4 D^2): every test is a
+// sign of a polynomial in the input doubles. Evaluation: each component of X and D in
+// double, with a forward error bound 64u times the same program on absolute values (the
+// programs have depth <= 6; Higham's gamma_6 < 7u, so the bound holds with a wide margin)
+// giving intervals for |X|^2 and D^2; when the intervals of the two sides are separated
+// (after a further relative margin 2^-30 for the rounding of squares, sums and B^2) the
+// filter decides; otherwise GMP rationals (geom/exact.hpp) do. The doubles of the filter
+// never decide alone a case the bound does not cover. Preconditions: the tet is positive
+// (orient3d > 0, as every live tet of the kernel) and its coordinates in the input range
+// (geom/input_range.hpp: no overflow or underflow in the filter).
+#pragma once
+
+#include <optional>
+
+#include "geom/point.hpp"
+
+namespace pdr::refine {
+
+// The bounds of SeqRefinement's loop (refine/seq_refinement.hpp): B, and L and V when given.
+struct TetBounds {
+  double ratio = 2.0;
+  std::optional<double> size;
+  std::optional<double> max_volume;
+};
+
+bool ratio_at_least(const Point& a, const Point& b, const Point& c, const Point& d,
+                    double bound);
+bool radius_above(const Point& a, const Point& b, const Point& c, const Point& d,
+                  double size);
+bool volume_above(const Point& a, const Point& b, const Point& c, const Point& d,
+                  double max_volume);
+// ratio_at_least || radius_above || volume_above, the measures computed once.
+bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
+            const TetBounds& bounds);
+
+// Display only (summaries): the radius-edge ratio and the dihedral angles in degrees.
+double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d);
+void dihedral_range(const Point& a, const Point& b, const Point& c, const Point& d,
+                    double& min_deg, double& max_deg);
+
+}  // namespace pdr::refine

@@ -1,0 +1,425 @@
+// SeqRefinement (paper §3, Fig. 2); see refine/seq_refinement.hpp.
+#include "refine/seq_refinement.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "geom/construct.hpp"
+#include "geom/point_text.hpp"
+#include "refine/audit.hpp"
+#include "refine/closure.hpp"
+#include "refine/flat.hpp"
+#include "refine/guard.hpp"
+#include "refine/quality.hpp"
+#include "refine/split.hpp"
+#include "surface/insert.hpp"
+#include "surface/split.hpp"
+
+namespace pdr::refine {
+namespace {
+
+struct Entry {
+  TetId t;
+  std::array<VertexId, 4> v;
+};
+
+class Refiner {
+ public:
+  Refiner(VolumeMesh& m, const RefineOptions& o) : m_(m), o_(o) {}
+
+  RefineResult run() {
+    res_.stats.vertex_cap = o_.max_vertices != 0 ? o_.max_vertices : derived_cap();
+    res_.stats.h = std::numeric_limits<double>::infinity();
+    const TetStore& s = m_.dt.store();
+    if (!o_.admissible) start_guards();
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
+    for (;;) {
+      if (!enc_.subsegments.empty()) {
+        const Encroached e = enc_.subsegments.back();
+        enc_.subsegments.pop_back();
+        if (!still_subsegment(m_.surf, e)) continue;
+        if (at_cap()) break;
+        ++res_.stats.encroached_splits;
+        if (auto why = split(e.id, hint(e.tet))) unsplit(std::move(*why));
+        continue;
+      }
+      if (!enc_.subfacets.empty()) {
+        const Encroached e = enc_.subfacets.back();
+        enc_.subfacets.pop_back();
+        if (!still_subfacet(m_.surf, e)) continue;
+        if (at_cap()) break;
+        ++res_.stats.encroached_splits;
+        refine_subfacet(e.id, hint(e.tet), kNoTet);
+        continue;
+      }
+      if (head_ >= queue_.size()) break;
+      const Entry e = queue_[head_++];
+      if (head_ > 4096 && head_ * 2 > queue_.size()) {
+        queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head_));
+        head_ = 0;
+      }
+      if (!same(e)) continue;
+      if (at_cap()) break;
+      const std::size_t before = m_.dt.num_points();
+      refine_tet(e.t);
+      // An encroached element split on t's behalf may leave t alive: it waits again.
+      if (m_.dt.num_points() > before && same(e)) queue_.push_back(e);
+      if (o_.progress && (++steps_ & 0x3FFF) == 0)
+        std::fprintf(stderr, "\rrefine: %zu vertices, %zu queued   ", m_.dt.num_points(),
+                     queue_.size() - head_);
+    }
+    if (o_.progress) std::fprintf(stderr, "\n");
+    collect_leftovers();
+    return std::move(res_);
+  }
+
+ private:
+  VolumeMesh& m_;
+  const RefineOptions o_;
+  RefineResult res_;
+  std::vector<Entry> queue_;
+  std::size_t head_ = 0;
+  std::uint64_t steps_ = 0;
+  Cavity cav_, cav2_;
+  std::vector<TetId> star_;
+  // The vertices of the current insertion step (after_insert), each with what it refined;
+  // a star of one of them.
+  std::vector<std::pair<VertexId, const char*>> step_;
+  std::vector<TetId> around_;
+  std::vector<std::pair<std::array<VertexId, 4>, std::string>> refused_;
+  SplitGuard guard_;     // empty for admissible domains (midpoints)
+  EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
+
+  const Point& pt(VertexId v) const { return m_.dt.point(v); }
+
+  double box_volume() const {
+    const auto& pts = m_.dt.points();
+    Point lo = pts[0], hi = pts[0];
+    for (const Point& p : pts)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    return (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  }
+  // The resolution u asked for: the smallest of d/2, L/2 and cbrt(V) given.
+  double resolution() const {
+    double u = o_.d > 0 && std::isfinite(o_.d) ? o_.d / 2 : std::cbrt(box_volume()) / 8;
+    if (o_.size) u = std::min(u, *o_.size / 2);
+    if (o_.max_volume) u = std::min(u, std::cbrt(*o_.max_volume));
+    return u;
+  }
+  std::size_t derived_cap() const {
+    // A resource limit, not a geometric decision: 1000 + 64 n + 16 (box volume) / u^3.
+    const double u = resolution();
+    const double cap = 1000.0 + 64.0 * static_cast<double>(m_.dt.num_points()) +
+                       16.0 * box_volume() / (u * u * u);
+    return static_cast<std::size_t>(std::min(cap, 2.0e9));
+  }
+  bool at_cap() {
+    if (m_.dt.num_points() < res_.stats.vertex_cap) return false;
+    res_.stop_reason = "refine.cap: " + std::to_string(m_.dt.num_points()) +
+                       " vertices reached the cap of " + std::to_string(res_.stats.vertex_cap) +
+                       (o_.max_vertices != 0
+                            ? std::string(" (--max-vertices)")
+                            : std::string(" (derived from the input size, its bounding box, d, "
+                                          "B and the size bounds); the domain is probably "
+                                          "outside the theory"));
+    return true;
+  }
+
+  // Inadmissible domains: shells and protected lengths at the acute vertices (every input
+  // vertex when the caller gave none), and the encroachment pre-pass over T_o.
+  void start_guards() {
+    std::vector<std::uint32_t> acute = o_.acute_vertices;
+    if (acute.empty())
+      for (std::uint32_t v = 0; v < m_.surf.vertex_count(); ++v)
+        if (m_.surf.home(v).kind == HomeKind::Input) acute.push_back(v);
+    guard_ = SplitGuard(m_.surf, acute, resolution() / 64);
+    const TetStore& s = m_.dt.store();
+    std::vector<TetId> all;
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t) && !s.is_ghost(t)) all.push_back(t);
+    find_encroached(m_, all, enc_);
+  }
+  TetId hint(TetId t) const {
+    const TetStore& s = m_.dt.store();
+    return t < s.slots() && s.is_alive(t) ? t : kNoTet;
+  }
+  // An encroached element the guards would not split.
+  void unsplit(std::string why) {
+    if (res_.stats.encroached_refused++ < 50) res_.unsplit.push_back(std::move(why));
+  }
+
+  std::array<VertexId, 4> verts(TetId t) const {
+    const VertexId* v = m_.dt.store().vertices(t);
+    return {v[0], v[1], v[2], v[3]};
+  }
+  bool same(const Entry& e) const {
+    const TetStore& s = m_.dt.store();
+    return e.t < s.slots() && s.is_alive(e.t) && verts(e.t) == e.v;
+  }
+
+  bool bad(TetId t) const {
+    const VertexId* v = m_.dt.store().vertices(t);
+    return is_bad(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), {o_.ratio, o_.size, o_.max_volume}) ||
+           subfacet_to_refine(m_, t).has_value();  // issue #3: refine/flat.hpp
+  }
+  void consider(TetId t) {
+    if (bad(t)) queue_.push_back({t, verts(t)});
+  }
+  void queue_star() {
+    const TetStore& s = m_.dt.store();
+    for (const TetId t : star_)
+      if (!s.is_ghost(t) && m_.is_inside(t)) consider(t);
+  }
+
+  void refuse(TetId t, std::string why) {
+    ++res_.stats.refused;
+    refused_.push_back({verts(t), std::move(why)});
+  }
+
+  // Locates p from `hint` and builds its cavity into `c`; false when p is a vertex.
+  bool plan(const Point& p, TetId hint, Cavity& c, bool& outside) {
+    const Location loc = m_.dt.locate(p, hint);
+    if (loc.kind == Location::Kind::OnVertex) return false;
+    outside = loc.kind == Location::Kind::OutsideHull || !m_.is_inside(loc.tet);
+    m_.dt.build_cavity(p, loc.tet, c);
+    return true;
+  }
+
+  // A Lemma 1 audit check: it throws on admissible domains; outside the theory the first
+  // failure is noted.
+  template <class Check>
+  void audited(Check check) {
+    if (o_.admissible) {
+      check();
+      return;
+    }
+    try {
+      check();
+    } catch (const RefineError& e) {
+      if (res_.stats.audit_failures++ == 0) res_.stats.audit_note = e.what();
+    }
+  }
+
+  // The current star of step_[i]'s vertex into around_ (star_ while the step has one).
+  void step_star(std::size_t i) {
+    if (step_.size() == 1) {
+      around_ = star_;
+      return;
+    }
+    const Location loc = m_.dt.locate(pt(step_[i].first), m_.dt.last_tet());
+    vertex_star(m_, step_[i].first, loc.tet, around_);
+  }
+
+  // Rounding repair at step_[i]'s vertex (issue #3, refine/flat.hpp rule 2): refines a
+  // subfacet face of a tet of its star whose fourth vertex lies strictly inside the
+  // subfacet's equatorial ball, as the bad-tet queue would. True when that added a vertex.
+  bool repair(std::size_t i) {
+    step_star(i);
+    const TetStore& s = m_.dt.store();
+    for (const TetId t : around_) {
+      if (s.is_ghost(t)) continue;
+      const auto f = encroached_subfacet_face(m_, t);
+      if (!f) continue;
+      const std::size_t before = m_.dt.num_points();
+      refine_subfacet(*f, t, t);  // its vertex joins step_ (no recursion)
+      if (m_.dt.num_points() > before) return true;
+    }
+    return false;
+  }
+
+  // After each commit: invariants 2-4 on the new edges, the new tets queued. The step's
+  // first call then repairs rounding encroachment at once at each vertex of the step (the
+  // repairs' vertices join the step; the vertex cap bounds them) and only then audits
+  // invariant 1 on each one's current star: every tet the step created holds one of them.
+  void after_insert(VertexId v, const char* what, double size2) {
+    if (o_.audit) audited([&] { audit_edges(m_, v, star_, what, size2, res_.stats.h); });
+    queue_star();
+    if (guard_.active()) find_encroached(m_, star_, enc_);
+    step_.emplace_back(v, what);
+    if (step_.size() > 1) return;  // a repair's vertex
+    for (std::size_t i = 0; i < step_.size() && !at_cap();)
+      if (!repair(i)) ++i;
+    if (o_.audit)
+      for (std::size_t i = 0; i < step_.size(); ++i) {
+        step_star(i);
+        audited([&] { audit_encroachment(m_, step_[i].first, around_, step_[i].second); });
+      }
+    step_.clear();
+  }
+
+  // Fig. 2 Refine(s) (refine/split.hpp: where); the reason when the guard refuses.
+  std::optional<std::string> split(std::uint32_t sub, TetId hint) {
+    const SplitGuard::Plan where = guard_.plan(m_.surf, sub);
+    if (!where.ok) return where.reason;
+    const Subsegment& x = m_.surf.subsegment(sub);
+    const Point a = m_.surf.point(x.v[0]), b = m_.surf.point(x.v[1]);
+    double piece2 = std::numeric_limits<double>::infinity();
+    for (const Point& e : {a, b}) {
+      double l2 = 0;
+      for (int k = 0; k < 3; ++k) l2 += (e[k] - where.p[k]) * (e[k] - where.p[k]);
+      piece2 = std::min(piece2, l2);
+    }
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(piece2));
+    const std::string name = m_.surf.segment_name(x.segment);
+    const surface::SplitResult r = split_subsegment_at(m_.surf, sub, where.p);
+    const Point p = m_.surf.point(r.vertex);
+    bool outside = false;
+    if (!plan(p, hint, cav_, outside))
+      throw RefineError("refine.split: the split point " + point_text(p) + " of " + name +
+                        " is already a vertex");
+    const VertexId v = commit_point(m_, cav_, r.vertex, star_);
+    ++res_.stats.subsegment_splits;
+    after_insert(v, "subsegment", piece2);
+    return std::nullopt;
+  }
+
+  // Tet t cannot be refined (kNoTet: an encroached element could not be split).
+  void give_up(TetId t, std::string why) {
+    if (t == kNoTet)
+      unsplit(std::move(why));
+    else
+      refuse(t, std::move(why));
+  }
+
+  // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t (kNoTet: f is encroached);
+  // `hint` locates its circumcenter.
+  void refine_subfacet(std::uint32_t f, TetId hint, TetId t) {
+    if (std::string why = guard_.refuse_subfacet(m_.surf, f); !why.empty()) {
+      give_up(t, std::move(why));
+      return;
+    }
+    const surface::FacetCavity fc = plan_circumcenter(m_.surf, f);
+    if (fc.status == surface::CavityStatus::Encroaches && !fc.encroached.empty()) {
+      if (auto why = split(fc.encroached.front(), hint)) give_up(t, std::move(*why));
+      return;
+    }
+    if (fc.status != surface::CavityStatus::Ok) {
+      give_up(t, std::string("refine.subfacet: the circumcenter of subfacet ") +
+                     std::to_string(f) + " of " + m_.surf.facet_name(fc.facet) +
+                     " cannot be inserted (" + cavity_status_name(fc.status) + ")");
+      return;
+    }
+    bool outside = false;
+    if (!plan(fc.p, hint, cav2_, outside)) {
+      give_up(t, "refine.subfacet: circumcenter " + point_text(fc.p) + " is already a vertex");
+      return;
+    }
+    if (const auto s = closure_encroached_subsegment(m_, {cav2_.conflict, cav2_.ring}, fc.p)) {
+      if (auto why = split(*s, hint)) give_up(t, std::move(*why));
+      return;
+    }
+    const Subfacet& x = m_.surf.subfacet(f);
+    const double r2 = construct::triangle_circumradius2(
+        m_.surf.point(x.v[0]), m_.surf.point(x.v[1]), m_.surf.point(x.v[2]));
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(r2 / 2));
+    const std::uint32_t sv = m_.surf.add_vertex(fc.p, {HomeKind::Facet, fc.facet});
+    const std::vector<std::uint32_t> fresh = commit_facet_cavity(m_.surf, fc, sv);
+    const VertexId v = commit_point(m_, cav2_, sv, star_);
+    ++res_.stats.subfacet_circumcenters;
+    verify_subfacets_present(v, fresh);
+    after_insert(v, "subfacet", r2);
+  }
+
+  // The new subfacets (p, e) must be faces of T (§1.1): each among the star's faces.
+  void verify_subfacets_present(VertexId v, const std::vector<std::uint32_t>& fresh) {
+    std::size_t seen = 0;
+    const TetStore& s = m_.dt.store();
+    for (const TetId t : star_)
+      for (int f = 0; f < 4; ++f)
+        if (s.vertex(t, f) != v && m_.face_subfacet(t, f)) ++seen;  // f contains v
+    // Each new subfacet is on two tets of the star.
+    if (seen != 2 * fresh.size())
+      throw RefineError("volume.conformity: after inserting the subfacet circumcenter " +
+                        point_text(pt(v)) + ", " + std::to_string(fresh.size()) +
+                        " new subfacets but " + std::to_string(seen) +
+                        " tet faces at the vertex are subfacets (expected twice as many)");
+  }
+
+  bool refine_own_element(TetId t, const Point& p) {
+    const std::span<const TetId> own(&t, 1);
+    if (const auto s = closure_encroached_subsegment(m_, {own}, p)) {
+      if (auto why = split(*s, t)) refuse(t, std::move(*why));
+      return true;
+    }
+    if (const auto f = closure_encroached_subfacet(m_, {own}, p)) {
+      refine_subfacet(*f, t, t);
+      return true;
+    }
+    return false;
+  }
+
+  void refine_tet(TetId t) {
+    if (const auto f = subfacet_to_refine(m_, t)) {  // issue #3: refine/flat.hpp
+      refine_subfacet(*f, t, t);
+      return;
+    }
+    const VertexId* v = m_.dt.store().vertices(t);
+    const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
+    const Point p = construct::circumcenter(a, b, c, d);
+    // Outside the theory, an element of t itself that p encroaches is in the closure too
+    // (t conflicts with p) and is refined without building p's cavity, which for a skinny
+    // tet at a sharp angle spans much of T (and would be built for each refused tet).
+    if (guard_.active() && refine_own_element(t, p)) return;
+    bool outside = false;
+    if (!plan(p, t, cav_, outside)) {
+      refuse(t, "refine.tet: circumcenter " + point_text(p) + " is already a vertex");
+      return;
+    }
+    if (const auto s = closure_encroached_subsegment(m_, {cav_.conflict, cav_.ring}, p)) {
+      if (auto why = split(*s, t)) refuse(t, std::move(*why));
+      return;
+    }
+    if (const auto f = closure_encroached_subfacet(m_, {cav_.conflict, cav_.ring}, p)) {
+      refine_subfacet(*f, t, t);
+      return;
+    }
+    if (outside) {
+      refuse(t, "refine.outside: circumcenter " + point_text(p) +
+                    " lies outside the domain but encroaches no subsegment or subfacet of "
+                    "its cavity's closure");
+      return;
+    }
+    const double r2 = construct::circumradius2(a, b, c, d);
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(r2) / 2);
+    const VertexId nv = commit_point(m_, cav_, kNone, star_);
+    ++res_.stats.tet_circumcenters;
+    after_insert(nv, "tet", r2);
+  }
+
+  void collect_leftovers() {
+    const TetStore& s = m_.dt.store();
+    std::sort(refused_.begin(), refused_.end());
+    for (TetId t = 0; t < s.slots(); ++t) {
+      if (!s.is_alive(t) || s.is_ghost(t) || !m_.is_inside(t)) continue;
+      const VertexId* v = s.vertices(t);
+      if (!ratio_at_least(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), o_.ratio)) continue;
+      Leftover l;
+      l.tet = t;
+      l.v = verts(t);
+      for (int k = 0; k < 4; ++k) l.p[k] = pt(v[k]);
+      l.ratio = ratio_of(l.p[0], l.p[1], l.p[2], l.p[3]);
+      auto it = std::lower_bound(refused_.begin(), refused_.end(),
+                                 std::pair<std::array<VertexId, 4>, std::string>{l.v, ""});
+      l.reason = it != refused_.end() && it->first == l.v
+                     ? it->second
+                     : (res_.stop_reason.empty() ? "refine.unrefined: never refined"
+                                                 : res_.stop_reason);
+      res_.leftovers.push_back(std::move(l));
+    }
+  }
+};
+
+}  // namespace
+
+RefineResult refine(VolumeMesh& m, const RefineOptions& options) {
+  return Refiner(m, options).run();
+}
+
+}  // namespace pdr::refine

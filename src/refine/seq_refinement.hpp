@@ -1,0 +1,103 @@
+// SeqRefinement (paper §3, Fig. 2) over the tets of T inside Ω.
+//
+// A tet is bad when ratio >= B (refine/quality.hpp, exact), or, with size control, its
+// circumradius exceeds L or its volume exceeds V. Bad tets wait in a FIFO work queue as
+// (tet id, its four vertices): an entry is skipped when the slot is dead or holds other
+// vertices (ids are reused). Refine(t):
+//   p = circumcenter(t) (double: where only); the tet containing p is located from t and
+//   the cavity of p built read-only from it;
+//   1. p in the CLOSED diametral ball of a subsegment that is an edge of a closure tet:
+//      split that subsegment instead (refine/split.hpp: the midpoint; outside the theory,
+//      near an acute input vertex, at a power-of-two distance from it: concentric shells);
+//      return;
+//   2. p in the closed equatorial ball of subfacets that are faces of closure tets: refine
+//      the one of largest circumradius at its circumcenter q in the facet (Fig. 2); q may
+//      encroach a subsegment (on the facet cavity's boundary, or an edge of q's closure in
+//      T): split that instead; return;
+//   3. p outside Ω (the tet containing it is outside, or p is outside the hull): there
+//      must have been an encroached element; if not, the tet is refused with that reason;
+//   4. commit: T gains p, the new tets get their flags (refine/volume_mesh.hpp) and are queued
+//      when bad.
+// After 1 or 2, t may still be alive (the split's cavity missed it): it is queued again.
+// Every step inserts a vertex or refuses (a refused tet is not queued again unless it is
+// destroyed and rebuilt), and the number of vertices is capped, so a run never hangs.
+// Guards for domains outside the theory (angles < 90°; RefineOptions::admissible false):
+//   - encroachment pass (refine/guard.hpp): Lemma 1 no longer keeps D unencroached, so
+//     encroached subsegments and subfacets are found exactly (strictly inside the ball, as
+//     the checker) among the tets of T_o once, then among the star of every new vertex,
+//     and refined before any tet: subsegments first (Refine(s)), then subfacets
+//     (Refine(f), step 2's circumcenter with its subsegment fallback);
+//   - concentric shells at the acute vertices (RefineOptions::acute_vertices from the
+//     domain analysis, refine/split.hpp);
+//   - protected length (resolution / 64, the resolution being the smallest of d/2, L/2,
+//     cbrt(V)): on segments and facets at an acute vertex nothing is split below it; the
+//     tet (or encroached element) whose refinement needed that split is refused, with the
+//     reason;
+//   - the vertex cap (RefineOptions::max_vertices, else derived from the input size,
+//     the domain's bounding box and the resolution) stops the loop with stop_reason set.
+// After the loop every inside tet with ratio >= B is listed (leftovers) with the reason,
+// and every encroached element the guards refused is listed (unsplit); the exact checker
+// on the output reports any encroachment left (pdr mesh then exits 3).
+// Lemma 1 audit (RefineOptions::audit): after each insertion, refine/audit.hpp checks
+// invariants 1-4 on what it touched and throws RefineError("lemma1.invariantK: ...").
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "refine/volume_mesh.hpp"
+
+namespace pdr::refine {
+
+struct RefineOptions {
+  double ratio = 2.0;                 // B
+  std::optional<double> size;         // L: circumradius bound
+  std::optional<double> max_volume;   // V
+  bool audit = false;
+  std::size_t max_vertices = 0;       // 0: derived cap
+  double d = 0;                       // paper §2.1 d (for the derived cap and the audit)
+  bool progress = false;              // a progress line on stderr
+  bool admissible = true;             // false: the audit records its first failure
+                                      // (audit_note) instead of stopping: Lemma 1 is
+                                      // not expected to hold outside the theory; and
+                                      // the guards below are on
+  std::vector<std::uint32_t> acute_vertices;  // inadmissible: acute_vertices(report)
+                                              // (refine/split.hpp); empty: every input
+                                              // vertex
+};
+
+struct Leftover {
+  TetId tet = kNoTet;
+  std::array<VertexId, 4> v{};
+  std::array<Point, 4> p{};
+  double ratio = 0;  // display only
+  std::string reason;
+};
+
+struct RefineStats {
+  std::size_t tet_circumcenters = 0;
+  std::size_t subfacet_circumcenters = 0;
+  std::size_t subsegment_splits = 0;
+  std::size_t refused = 0;
+  std::size_t vertex_cap = 0;
+  std::size_t encroached_splits = 0;    // elements the encroachment guard refined
+  std::size_t encroached_refused = 0;   // ... and those it could not (unsplit)
+  double h = 0;  // the audit's h: min over refinements of (l/2, R_f/√2, R_t/2)
+  std::size_t audit_failures = 0;  // inadmissible domains only (else the first throws)
+  std::string audit_note;          // the first of them
+};
+
+struct RefineResult {
+  RefineStats stats;
+  std::vector<Leftover> leftovers;  // inside tets with ratio >= B at the end
+  std::vector<std::string> unsplit;  // why encroached elements were not refined (first 50)
+  std::string stop_reason;          // empty unless the vertex cap stopped the loop
+};
+
+RefineResult refine(VolumeMesh& m, const RefineOptions& options);
+
+}  // namespace pdr::refine

@@ -1,0 +1,109 @@
+// surface::Subsegment split points: midpoints, concentric shells, protected lengths; see
+// refine/split.hpp.
+#include "refine/split.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "geom/construct.hpp"
+
+namespace pdr::refine {
+
+std::vector<std::uint32_t> acute_vertices(const domain::DomainReport& r) {
+  std::vector<std::uint32_t> out;
+  for (const domain::AngleRecord& a : r.violations) {
+    if (a.vertex >= 0) {
+      out.push_back(static_cast<std::uint32_t>(a.vertex));
+      continue;
+    }
+    for (const auto& s : a.segments) out.insert(out.end(), s.begin(), s.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+SplitGuard::SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& acute,
+                       double protected_length)
+    : protected_(protected_length) {
+  if (acute.empty()) return;
+  acute_.assign(m.vertex_count(), 0);
+  for (const std::uint32_t v : acute)
+    if (v < acute_.size()) acute_[v] = 1;
+  guarded_.assign(m.segments.size(), 0);
+  for (std::size_t s = 0; s < m.segments.size(); ++s)
+    guarded_[s] = static_cast<std::uint8_t>(is_acute(m.segments[s].a) || is_acute(m.segments[s].b));
+  guarded_facet_.assign(m.facets.size(), 0);
+  for (std::size_t f = 0; f < m.facets.size(); ++f)
+    for (const std::uint32_t s : m.facets[f].segments)
+      if (guarded_[s]) guarded_facet_[f] = 1;
+}
+
+std::string SplitGuard::refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f) const {
+  const surface::Subfacet& x = m.subfacet(f);
+  if (!active() || !guarded_facet_[x.facet]) return {};
+  const double r = std::sqrt(construct::triangle_circumradius2(m.point(x.v[0]), m.point(x.v[1]),
+                                                               m.point(x.v[2])));
+  if (r >= protected_) return {};
+  std::ostringstream os;
+  os.precision(6);
+  os << "refine.protected: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2]
+     << ") of " << m.facet_name(x.facet) << " has circumradius " << r
+     << " < the protected length " << protected_
+     << " of a facet at an acute input vertex (angle < 90 deg)";
+  return os.str();
+}
+
+namespace {
+
+double distance(const Point& a, const Point& b) {
+  double s = 0;
+  for (int k = 0; k < 3; ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
+  return std::sqrt(s);
+}
+
+// The power of two closest to x > 0.
+double nearest_power_of_two(double x) {
+  const double lo = std::exp2(std::floor(std::log2(x)));
+  return x - lo <= 2 * lo - x ? lo : 2 * lo;
+}
+
+}  // namespace
+
+SplitGuard::Plan SplitGuard::plan(const surface::SurfaceMesh& m, std::uint32_t s) const {
+  const surface::Subsegment& g = m.subsegment(s);
+  const Point &a = m.point(g.v[0]), &b = m.point(g.v[1]);
+  Plan r;
+  if (!active() || !guarded_[g.segment]) {
+    r.p = construct::midpoint(a, b);
+    return r;
+  }
+  const double l = distance(a, b);
+  const bool sa = is_acute(g.v[0]), sb = is_acute(g.v[1]);
+  double t = 0.5;  // fraction of the way from a to b
+  if (sa != sb) {
+    const double from = nearest_power_of_two(l / 2);  // in [l/3, 2l/3]
+    t = sa ? from / l : 1 - from / l;
+  }
+  const double piece = std::min(t, 1 - t) * l;
+  if (piece < protected_) {
+    std::ostringstream os;
+    os.precision(6);
+    os << "refine.protected: splitting subsegment (" << g.v[0] << ", " << g.v[1] << ") of "
+       << m.segment_name(g.segment) << " would leave a piece of length " << piece
+       << " < the protected length " << protected_
+       << " of a segment at an acute input vertex (angle < 90 deg)";
+    r.ok = false;
+    r.reason = os.str();
+    return r;
+  }
+  if (t == 0.5) {
+    r.p = construct::midpoint(a, b);
+  } else {
+    for (int k = 0; k < 3; ++k) r.p[k] = a[k] + t * (b[k] - a[k]);
+  }
+  return r;
+}
+
+}  // namespace pdr::refine

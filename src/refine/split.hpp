@@ -1,0 +1,64 @@
+// Where a subsegment is split (paper Fig. 2 "Refine(s)": at its midpoint), with the guards
+// for domains outside the theory (angles < 90°, domain/angles.hpp), after Ruppert's and
+// Shewchuk's concentric shells:
+//   acute vertices  the input vertices where an inadmissible pair meets (the shared
+//                   vertex of a record; for a dihedral along a segment, its two ends);
+//                   a segment with an acute end is guarded;
+//   shells          a subsegment (u, w) with u an acute input vertex and w not one is split
+//                   at the point at distance 2^k from u (k integer) closest to its
+//                   midpoint, so in [l/3, 2l/3]: the subsegments around u end on the same
+//                   spheres centred at u, and a split near u never encroaches the
+//                   subsegment of a neighbouring segment at the same radius (the cascade
+//                   around a small angle stops); otherwise the midpoint;
+//   protected       on a guarded segment no split leaves a piece shorter than the
+//                   protected length (the caller's resolution / 64: a floor on how fine the
+//                   shells go); plan then refuses, with the reason, and the caller reports
+//                   the element it could not refine. Likewise a subfacet of circumradius
+//                   below the protected length on a guarded facet (one containing a
+//                   guarded segment) is not refined (refuse_subfacet): near a sharp
+//                   dihedral the subfacets of the two facets encroach each other at every
+//                   scale, and this floor ends that cascade.
+// For an admissible domain the guard is empty: every split is the midpoint, as Lemma 1
+// needs. Lengths and the split point are floating point: they say where, not whether; the
+// point is a + t (b - a), on the segment up to rounding like the midpoint.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "domain/analysis.hpp"
+#include "surface/surface_mesh.hpp"
+
+namespace pdr::refine {
+
+// The acute vertices of a domain (Plc vertex ids = D's input vertex ids), sorted, unique.
+std::vector<std::uint32_t> acute_vertices(const domain::DomainReport& r);
+
+class SplitGuard {
+ public:
+  SplitGuard() = default;  // no guard: midpoints
+  SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& acute,
+             double protected_length);
+
+  struct Plan {
+    bool ok = true;
+    Point p{};           // where (ok)
+    std::string reason;  // why not (!ok)
+  };
+  Plan plan(const surface::SurfaceMesh& m, std::uint32_t subsegment) const;
+  // Why subfacet f may not be refined, or empty.
+  std::string refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f) const;
+  bool active() const { return !acute_.empty(); }
+  double protected_length() const { return protected_; }
+
+ private:
+  std::vector<std::uint8_t> acute_;    // per input vertex of D
+  std::vector<std::uint8_t> guarded_;  // per segment
+  std::vector<std::uint8_t> guarded_facet_;
+  double protected_ = 0;
+
+  bool is_acute(std::uint32_t v) const { return v < acute_.size() && acute_[v] != 0; }
+};
+
+}  // namespace pdr::refine

@@ -1,0 +1,80 @@
+// VolumeMesh queries (paper §1.1); see refine/volume_mesh.hpp.
+#include "refine/volume_mesh.hpp"
+
+#include <algorithm>
+
+namespace pdr::refine {
+
+void VolumeMesh::map_vertex(VertexId v, std::uint32_t surf_vertex) {
+  d2s.push_back(surf_vertex);
+  VertexClass k = VertexClass::Interior;
+  if (surf_vertex != kNone) {
+    if (s2d.size() <= surf_vertex) s2d.resize(surf_vertex + 1, kNone);
+    s2d[surf_vertex] = v;
+    k = surf.home(surf_vertex).kind == HomeKind::Facet ? VertexClass::Facet
+                                                       : VertexClass::Segment;
+  }
+  vclass.push_back(k);
+}
+
+MaybeId VolumeMesh::find_subfacet(VertexId a, VertexId b, VertexId c) const {
+  const std::uint32_t sa = d2s[a], sb = d2s[b], sc = d2s[c];
+  // Every subfacet listed at sa contains sa; one with the edge {sb, sc} is {sa, sb, sc}.
+  for (const std::uint32_t t : surf.vertex_subfacets(sa)) {
+    const Subfacet& f = surf.subfacet(t);
+    if (f.alive && edge_index(f, sb, sc) >= 0) return t;
+  }
+  return {};
+}
+
+MaybeId VolumeMesh::find_subsegment(VertexId a, VertexId b) const {
+  const std::optional<std::uint32_t> s = surf.find_subsegment(d2s[a], d2s[b]);
+  return s ? MaybeId(*s) : MaybeId();
+}
+
+std::size_t VolumeMesh::inside_tets() const {
+  std::size_t n = 0;
+  const TetStore& s = dt.store();
+  for (TetId t = 0; t < s.slots(); ++t)
+    if (s.is_alive(t) && !s.is_ghost(t) && is_inside(t)) ++n;
+  return n;
+}
+
+VertexId commit_point(VolumeMesh& m, const Cavity& c, std::uint32_t surf_vertex,
+                      std::vector<TetId>& star) {
+  const VertexId v = m.dt.add_point(c.point);
+  m.dt.commit(c, v);
+  m.map_vertex(v, surf_vertex);
+  const TetStore& s = m.dt.store();
+  if (m.inside.size() < s.slots()) m.inside.resize(s.slots() + s.slots() / 2, 0);
+  // New tet i holds v at the slot of boundary face i, glued there to the old neighbour
+  // (delaunay.hpp last_created).
+  const std::span<const TetId> made = m.dt.last_created();
+  star.assign(made.begin(), made.end());
+  for (std::size_t i = 0; i < made.size(); ++i) {
+    const TetId t = made[i];
+    if (s.is_ghost(t)) {
+      m.inside[t] = 0;
+      continue;
+    }
+    const int k = face_of(c.boundary[i]);
+    const TetId n = s.neighbour(t, k);
+    const bool flip = m.face_subfacet(t, k).has_value();
+    m.inside[t] = static_cast<std::uint8_t>((s.is_ghost(n) ? 0 : m.inside[n]) ^ (flip ? 1 : 0));
+  }
+  return v;
+}
+
+void vertex_star(const VolumeMesh& m, VertexId v, TetId start, std::vector<TetId>& star) {
+  const TetStore& s = m.dt.store();
+  star.assign(1, start);
+  // The tets of the star are adjacent across their faces that hold v.
+  for (std::size_t i = 0; i < star.size(); ++i)
+    for (int k = 0; k < 4; ++k) {
+      if (s.vertex(star[i], k) == v) continue;
+      const TetId n = s.neighbour(star[i], k);
+      if (std::find(star.begin(), star.end(), n) == star.end()) star.push_back(n);
+    }
+}
+
+}  // namespace pdr::refine

@@ -1,0 +1,139 @@
+// Mesh initialization, paper §2.1 steps 1 and 2; see surface/init.hpp.
+#include "surface/init.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <limits>
+
+#include "surface/build.hpp"
+#include "surface/encroach.hpp"
+#include "surface/insert.hpp"
+#include "surface/split.hpp"
+
+namespace pdr::surface {
+
+namespace {
+
+double distance(const Point& a, const Point& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+double triangle_area(const Point& a, const Point& b, const Point& c) {
+  const Point u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const Point n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+// The guard of surface/init.hpp (a resource limit computed in floating point).
+std::size_t vertex_cap(const SurfaceMesh& m, double d, const SurfaceOptions& o) {
+  double length = 0, area = 0;
+  for (const SurfaceSegment& s : m.segments) length += distance(m.point(s.a), m.point(s.b));
+  for (const Subfacet& t : m.subfacets())
+    if (t.alive) area += triangle_area(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]));
+  const double derived =
+      static_cast<double>(m.vertex_count()) + 16 * (length / d + area / (d * d)) + 1024;
+  const double limit = static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2);
+  auto cap = static_cast<std::size_t>(std::min(derived, limit));
+  if (o.max_vertices != 0) cap = std::min(cap, o.max_vertices);
+  return cap;
+}
+
+class Initializer {
+ public:
+  Initializer(SurfaceMesh& m, double d, std::size_t cap, SurfaceStats& st)
+      : m_(m), d_(d), cap_(cap), st_(st) {}
+
+  void refine_segments() {
+    std::deque<std::uint32_t> queue;
+    for (std::uint32_t s = 0; s < m_.subsegments().size(); ++s) queue.push_back(s);
+    while (!queue.empty()) {
+      const std::uint32_t s = queue.front();
+      queue.pop_front();
+      if (!subsegment_too_long(m_, s, d_)) continue;
+      guard(m_.segment_name(m_.subsegment(s).segment) + " (step 1, segment refinement)");
+      const SplitResult r = split_subsegment(m_, s);
+      ++st_.segment_splits;
+      queue.push_back(s);
+      queue.push_back(r.new_subsegment);
+    }
+  }
+
+  void refine_facets() {
+    for (std::uint32_t t = 0; t < m_.subfacets().size(); ++t)
+      if (m_.subfacet(t).alive) push(t);
+    while (!queue_.empty()) {
+      const auto [t, v] = queue_.front();
+      queue_.pop_front();
+      const Subfacet& s = m_.subfacet(t);
+      if (!s.alive || s.v != v || !subfacet_too_large(m_, t, d_)) continue;
+      const std::uint32_t f = s.facet;
+      guard(m_.facet_name(f) + " (step 2, facet refinement)");
+      const InsertResult r = insert_circumcenter(m_, t);
+      if (r.outcome == InsertOutcome::Rejected)
+        throw SurfaceError("surface.insert: " + m_.facet_name(f) +
+                           ": the circumcenter of subfacet (" + std::to_string(v[0]) + ", " +
+                           std::to_string(v[1]) + ", " + std::to_string(v[2]) +
+                           ") cannot be inserted: cavity " + cavity_status_name(r.cavity));
+      if (r.outcome == InsertOutcome::Inserted) {
+        ++st_.circumcenters;
+        for (const std::uint32_t n : r.subfacets) push(n);
+        continue;
+      }
+      for (const std::uint32_t g : r.encroached) {
+        guard(m_.facet_name(f) + " (step 2, splitting an encroached subsegment)");
+        const SplitResult sr = split_subsegment(m_, g);
+        ++st_.encroachment_splits;
+        for (const std::uint32_t n : sr.subfacets) push(n);
+      }
+      queue_.push_back({t, v});
+    }
+  }
+
+ private:
+  void push(std::uint32_t t) { queue_.push_back({t, m_.subfacet(t).v}); }
+
+  void guard(const std::string& where) const {
+    if (m_.vertex_count() < cap_) return;
+    throw SurfaceError("surface.guard: " + where + ": the surface mesh reached " +
+                       std::to_string(m_.vertex_count()) + " vertices, its cap (from the " +
+                       "domain's size and d = " + number(d_) +
+                       "); refinement does not converge here: the domain is probably "
+                       "inadmissible near it (paper §1.1: angles between related components "
+                       "of 90 to 270 degrees) or d is tiny; see the domain report");
+  }
+
+  SurfaceMesh& m_;
+  double d_;
+  std::size_t cap_;
+  SurfaceStats& st_;
+  std::deque<std::pair<std::uint32_t, std::array<std::uint32_t, 3>>> queue_;
+};
+
+}  // namespace
+
+SurfaceInit init_surface(const domain::PlcDomain& dom, double d, const SurfaceOptions& options) {
+  SurfaceInit out;
+  out.mesh = build_surface(dom);
+  if (!(d > 0) || !std::isfinite(d)) return out;
+  out.mesh.d = d;
+  out.stats.vertex_cap = vertex_cap(out.mesh, d, options);
+  Initializer init(out.mesh, d, out.stats.vertex_cap, out.stats);
+  init.refine_segments();
+  init.refine_facets();
+  return out;
+}
+
+SurfaceInit init_surface(const domain::DomainAnalysis& analysis, const SurfaceOptions& options) {
+  return init_surface(analysis.domain, analysis.report.feature.d, options);
+}
+
+}  // namespace pdr::surface

@@ -1,0 +1,59 @@
+// Mesh initialization, paper §2.1 steps 1 and 2: the surface mesh D_o.
+//
+//   Step 1, segment refinement: split every subsegment at its midpoint until each is
+//     shorter than 2d (surface/split.hpp). Terminates for any domain: lengths halve.
+//   Step 2, facet refinement: each face starts as the Delaunay triangulation of its
+//     vertices (input vertices and the step 1 vertices on its segments) restricted to the
+//     face (surface/build.hpp, then the step 1 splits as Bowyer-Watson insertions); then
+//     circumcenters of subfacets with circumradius >= d√2 are inserted (surface/insert.hpp)
+//     until every circumradius is < d√2. A circumcenter that encroaches a subsegment (or
+//     falls outside the facet) is not inserted: the subsegment is split instead, in every
+//     facet containing it (Fig. 2). One FIFO queue over all facets; splits may add
+//     subfacets to facets already refined, which are queued too.
+// Termination. After step 1 every subsegment is shorter than 2d, and the facet
+// triangulations are Delaunay, so a circumcenter c of a subfacet with circumradius R >= d√2
+// has no vertex closer than R. If c were in the closed diametral ball of a subsegment ab
+// (a, b at distance >= R from c), then |ab|^2 = |c-a|^2 + |c-b|^2 - 2 (c-a).(c-b) >= 2R^2
+// >= 4d^2: impossible. So in exact arithmetic (coplanar facet vertices, and for an
+// admissible domain, where no subsegment is encroached after step 1 so the constrained
+// triangulations are Delaunay) step 2 splits nothing; all vertices stay pairwise at least
+// d apart, and a packing argument bounds their number by O(L / d + A / d^2) (below).
+// Guard (a run never hangs, even with rounding or inadmissible input): the number of
+// vertices is capped at V_input + 16 (L / d + A / d^2) + 1024 (L: total segment length,
+// A: total facet area, in floating point: a resource limit, not a geometric decision), or
+// at SurfaceOptions::max_vertices when that is set and smaller, and never above 2^31
+// (vertex ids are 32-bit). Reaching it throws
+// SurfaceError("surface.guard: <facet or segment>: ..."). A degenerate cavity (excluded by
+// the exact arguments for coplanar points) throws SurfaceError naming the facet too.
+// d infinite (no two unrelated components) or not positive: nothing is refined.
+#pragma once
+
+#include <cstddef>
+
+#include "domain/analysis.hpp"
+#include "domain/domain.hpp"
+#include "surface/surface_mesh.hpp"
+
+namespace pdr::surface {
+
+struct SurfaceOptions {
+  std::size_t max_vertices = 0;  // 0: the derived cap only
+};
+
+struct SurfaceStats {
+  std::size_t segment_splits = 0;        // step 1
+  std::size_t circumcenters = 0;         // step 2 insertions
+  std::size_t encroachment_splits = 0;   // step 2 subsegment splits instead of circumcenters
+  std::size_t vertex_cap = 0;            // the guard in force
+};
+
+struct SurfaceInit {
+  SurfaceMesh mesh;
+  SurfaceStats stats;
+};
+
+// d: paper §2.1 (domain::DomainReport::feature.d).
+SurfaceInit init_surface(const domain::PlcDomain& dom, double d, const SurfaceOptions& options = {});
+SurfaceInit init_surface(const domain::DomainAnalysis& analysis, const SurfaceOptions& options = {});
+
+}  // namespace pdr::surface

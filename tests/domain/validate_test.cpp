@@ -1,0 +1,321 @@
+// Validation and structure of polyhedral domains (paper §1.1): every malformed-input class
+// gets its own diagnostic naming the right source line, and valid inputs get the related
+// components and orientation the later stages rely on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "domain/validate.hpp"
+#include "geom/predicates.hpp"
+#include "support/plc_fixtures.hpp"
+
+namespace pdr::domain::test {
+using namespace pdr::test;
+namespace {
+
+::testing::AssertionResult Fails(const Plc& plc, std::size_t line, const std::string& invariant,
+                                 const PlcOptions& opt = {}) {
+  const std::string e = error_of(plc, opt);
+  const std::string where = "test.poly:" + std::to_string(line) + ": " + invariant;
+  if (e.rfind(where, 0) == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "expected '" << where << "...', got '" << e << "'";
+}
+
+TEST(PlcValidate, AcceptsBoxAndBuildsRelatedComponents) {
+  const PlcDomain dom = build_domain(box({0, 0, 0}, {1, 1, 1}));
+  EXPECT_EQ(dom.vertex_count(), 8u);
+  EXPECT_EQ(dom.segments.size(), 12u);
+  EXPECT_EQ(dom.face_count(), 6u);
+  EXPECT_EQ(dom.shells, 1u);
+  EXPECT_TRUE(dom.tolerance_facets.empty());
+  for (const DomainSegment& s : dom.segments) {
+    EXPECT_LT(s.a, s.b);
+    EXPECT_EQ(s.sides.size(), 2u);
+    EXPECT_EQ(s.facets.size(), 2u);
+  }
+  for (std::uint32_t v = 0; v < 8; ++v) {
+    EXPECT_EQ(dom.vertex_segments[v].size(), 3u);
+    EXPECT_EQ(dom.vertex_facets[v].size(), 3u);
+  }
+  for (const DomainFacet& f : dom.facets) {
+    EXPECT_TRUE(f.is_face);
+    EXPECT_TRUE(f.plane.exact);
+    EXPECT_EQ(f.tris.size(), 2u);
+    EXPECT_EQ(f.segments.size(), 4u);
+    // The defining triple spans the facet's plane exactly.
+    const auto& t = f.plane.triple;
+    for (std::uint32_t v : f.vertices)
+      EXPECT_EQ(orient3d(dom.plc.points[t[0]], dom.plc.points[t[1]], dom.plc.points[t[2]],
+                         dom.plc.points[v]),
+                Sign::Zero);
+  }
+}
+
+// inward = +1 iff the triangle's normal points into the domain; check against a point that
+// is known to be inside (or outside) near each triangle: the centroid of the body.
+void expect_inward_towards(const PlcDomain& dom, std::size_t first_facet, std::size_t end_facet,
+                           const Point& centre, int expected) {
+  for (std::size_t f = first_facet; f < end_facet; ++f)
+    for (const FacetTri& t : dom.facets[f].tris) {
+      const Sign s = orient3d(dom.plc.points[t.v[0]], dom.plc.points[t.v[1]],
+                              dom.plc.points[t.v[2]], centre);
+      EXPECT_EQ(to_int(s) * t.inward, expected) << "facet " << f;
+    }
+}
+
+TEST(PlcValidate, OrientsBoundaryTowardsTheDomain) {
+  const PlcDomain cube = build_domain(box({0, 0, 0}, {1, 1, 1}));
+  expect_inward_towards(cube, 0, 6, {0.5, 0.5, 0.5}, +1);
+  for (const DomainSegment& s : cube.segments) {
+    ASSERT_EQ(s.sides.size(), 2u);
+    EXPECT_EQ(s.sides[0].inside_after + s.sides[1].inside_after, 0);
+  }
+  const PlcDomain cic = build_domain(read_data("cube-in-cube.poly"));
+  EXPECT_EQ(cic.shells, 2u);
+  expect_inward_towards(cic, 0, 6, {5, 5, 5}, +1);   // outer walls face inwards
+  expect_inward_towards(cic, 6, 12, {5, 5, 5}, -1);  // the void's walls face away from it
+}
+
+TEST(PlcValidate, RejectsDuplicateVertex) {
+  Plc p = box({0, 0, 0}, {1, 1, 1});
+  p.points.push_back(p.points[3]);
+  relabel(p);
+  EXPECT_TRUE(Fails(p, kPointLine + 8, "distinct vertices"));
+}
+
+TEST(PlcValidate, RejectsIndexOutOfRange) {
+  Plc p = box({0, 0, 0}, {1, 1, 1});
+  p.facets[2].polygons[0][1] = 99;
+  EXPECT_TRUE(Fails(p, kFacetLine + 2, "index in range"));
+}
+
+TEST(PlcValidate, RejectsDegeneratePolygons) {
+  Plc repeated = box({0, 0, 0}, {1, 1, 1});
+  repeated.facets[1].polygons[0] = {4, 5, 5, 6, 7};
+  EXPECT_TRUE(Fails(repeated, kFacetLine + 1, "non-degenerate polygon"));
+
+  Plc twice = box({0, 0, 0}, {1, 1, 1});
+  twice.facets[1].polygons[0] = {4, 5, 6, 4, 7};
+  EXPECT_TRUE(Fails(twice, kFacetLine + 1, "simple polygon"));
+
+  Plc flat = box({0, 0, 0}, {1, 1, 1});
+  flat.points.push_back({0.5, 0, 0});
+  PlcFacet sliver;
+  sliver.polygons = {{0, 8, 1}};
+  flat.facets.push_back(sliver);
+  relabel(flat);
+  EXPECT_TRUE(Fails(flat, kFacetLine + 6, "non-degenerate polygon"));
+
+  Plc two = box({0, 0, 0}, {1, 1, 1});
+  two.facets[3].polygons[0] = {1, 1};
+  EXPECT_TRUE(Fails(two, kFacetLine + 3, "non-degenerate polygon"));
+}
+
+TEST(PlcValidate, RejectsSelfIntersectingFacet) {
+  Plc p = box({0, 0, 0}, {1, 1, 1});
+  p.facets[1].polygons[0] = {4, 5, 7, 6};  // a bow tie
+  EXPECT_TRUE(Fails(p, kFacetLine + 1, "simple facet polygons"));
+}
+
+TEST(PlcValidate, PlanarityToleranceClassifiesImpreciseFacets) {
+  Plc near = box({0, 0, 0}, {1, 1, 1});
+  for (double& c : near.points[6]) c += 1e-13;  // three facets become non-planar by 1e-13
+  const PlcDomain dom = build_domain(near);
+  ASSERT_EQ(dom.tolerance_facets.size(), 3u);
+  for (std::uint32_t f : dom.tolerance_facets) {
+    EXPECT_FALSE(dom.facets[f].plane.exact);
+    EXPECT_GT(dom.facets[f].plane.max_deviation, 0.0);
+    EXPECT_LT(dom.facets[f].plane.max_deviation, 1e-12);
+  }
+  Plc far = box({0, 0, 0}, {1, 1, 1});
+  far.points[6][2] += 1e-3;
+  EXPECT_TRUE(Fails(far, kFacetLine + 1, "planar facet"));
+  // The same input passes with a looser tolerance, and is rejected with a stricter one.
+  EXPECT_EQ(error_of(far, PlcOptions{1e-2}), "");
+  EXPECT_TRUE(Fails(near, kFacetLine + 1, "planar facet", PlcOptions{1e-15}));
+}
+
+TEST(PlcValidate, RejectsCrossingFacets) {
+  const Plc p = merge(box({0, 0, 0}, {2, 2, 2}), box({1, 1, 1}, {3, 3, 3}));
+  const std::string e = error_of(p);
+  EXPECT_NE(e.find("non-crossing components"), std::string::npos) << e;
+}
+
+TEST(PlcValidate, RejectsVertexInsideAnotherFacet) {
+  // A small box glued onto the face x = 2 of a larger one, without splitting that face.
+  const Plc p = merge(box({0, 0, 0}, {2, 2, 2}), box({2, 0.5, 0.5}, {3, 1.5, 1.5}));
+  const std::string e = error_of(p);
+  EXPECT_NE(e.find("non-crossing components"), std::string::npos) << e;
+  EXPECT_NE(e.find("lies on facet"), std::string::npos) << e;
+}
+
+TEST(PlcValidate, RejectsOpenBoundary) {
+  Plc p = box({0, 0, 0}, {1, 1, 1});
+  p.facets.erase(p.facets.begin() + 1);  // no top
+  relabel(p);
+  const std::string e = error_of(p);
+  EXPECT_NE(e.find("closed boundary"), std::string::npos) << e;
+  EXPECT_NE(e.find("only one facet side"), std::string::npos) << e;
+}
+
+TEST(PlcValidate, AcceptsVertexInsideAnotherFacetsEdge) {
+  // The top of the box [0,2]x[0,1]x[0,1] is split at x = 1 into two facets; the walls
+  // y = 0 and y = 1 keep their 4-vertex polygons, whose top edges hold the new vertices.
+  Plc p = box({0, 0, 0}, {2, 1, 1});
+  p.points.push_back({1, 0, 1});  // 8
+  p.points.push_back({1, 1, 1});  // 9
+  p.facets[1].polygons = {{4, 8, 9, 7}};
+  PlcFacet right;
+  right.polygons = {{8, 5, 6, 9}};
+  p.facets.push_back(right);
+  relabel(p);
+  const PlcDomain dom = build_domain(p);
+  EXPECT_EQ(dom.vertex_count(), 10u);
+  EXPECT_EQ(dom.segments.size(), 15u);  // 12 edges, two of them split, plus the split line
+  for (const DomainSegment& s : dom.segments) EXPECT_EQ(s.sides.size(), 2u);
+}
+
+TEST(PlcValidate, AcceptsCollinearOverlappingEdges) {
+  // The box [0,3]x[0,1]x[0,1] with its top split at x = 2 and its front wall (y = 0) split
+  // at x = 1: the top-left facet's front edge (x in [0,2]) and the front-right wall's top
+  // edge (x in [1,3]) overlap on [1,2]; splitting at vertices makes them share that piece.
+  Plc p = box({0, 0, 0}, {3, 1, 1});
+  p.points.push_back({2, 0, 1});  // 8
+  p.points.push_back({2, 1, 1});  // 9
+  p.points.push_back({1, 0, 0});  // 10
+  p.points.push_back({1, 0, 1});  // 11
+  p.facets[1].polygons = {{4, 8, 9, 7}};
+  p.facets[2].polygons = {{0, 10, 11, 4}};
+  PlcFacet top_right, front_right;
+  top_right.polygons = {{8, 5, 6, 9}};
+  front_right.polygons = {{10, 1, 5, 11}};
+  p.facets.push_back(top_right);
+  p.facets.push_back(front_right);
+  relabel(p);
+  const PlcDomain dom = build_domain(p);
+  for (const DomainSegment& s : dom.segments) EXPECT_EQ(s.sides.size(), 2u);
+  EXPECT_TRUE(dom.find_segment(11, 8).has_value());  // the shared piece [1,2]
+  EXPECT_FALSE(dom.find_segment(4, 8).has_value());  // split at 11
+  EXPECT_FALSE(dom.find_segment(11, 5).has_value());  // split at 8
+}
+
+TEST(PlcValidate, AcceptsFacetHolesAndTunnels) {
+  // A frame: the box [0,3]x[0,3]x[0,1] with a square tunnel [1,2]^2 along z.
+  std::vector<Point> pts{{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {0, 3, 0}, {0, 0, 1}, {3, 0, 1},
+                         {3, 3, 1}, {0, 3, 1}, {1, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0},
+                         {1, 1, 1}, {2, 1, 1}, {2, 2, 1}, {1, 2, 1}};
+  Plc p = make_plc(pts, {{{0, 1, 2, 3}, {8, 9, 10, 11}}, {{4, 5, 6, 7}, {12, 13, 14, 15}},
+                         {{0, 1, 5, 4}}, {{1, 2, 6, 5}}, {{2, 3, 7, 6}}, {{3, 0, 4, 7}},
+                         {{8, 9, 13, 12}}, {{9, 10, 14, 13}}, {{10, 11, 15, 14}},
+                         {{11, 8, 12, 15}}});
+  p.facets[0].holes = {{1.5, 1.5, 0}};
+  p.facets[1].holes = {{1.5, 1.5, 1}};
+  const PlcDomain dom = build_domain(p);
+  EXPECT_EQ(dom.shells, 1u);
+  EXPECT_EQ(dom.facets[0].tris.size(), 8u);  // an annulus of 8 vertices
+  expect_inward_towards(dom, 2, 6, {1.5, 1.5, 0.5}, +1);
+  expect_inward_towards(dom, 6, 10, {1.5, 1.5, 0.5}, -1);
+
+  // Without the facet holes the caps cover the tunnel: each tunnel edge on a cap is then
+  // inside the cap (2 sides) and on a tunnel wall (1 side), an odd count.
+  Plc covered = p;
+  covered.facets[0].holes.clear();
+  covered.facets[1].holes.clear();
+  EXPECT_NE(error_of(covered).find("closed boundary"), std::string::npos);
+}
+
+TEST(PlcValidate, RejectsBadFacetHoles) {
+  Plc off = box({0, 0, 0}, {3, 3, 1});
+  off.facets[1].holes = {{1.5, 1.5, 1.25}};
+  EXPECT_TRUE(Fails(off, kFacetLine + 1, "facet hole in plane"));
+  Plc outside = box({0, 0, 0}, {3, 3, 1});
+  outside.facets[1].holes = {{4, 4, 1}};
+  EXPECT_TRUE(Fails(outside, kFacetLine + 1, "facet hole inside facet"));
+  Plc on_edge = box({0, 0, 0}, {3, 3, 1});
+  on_edge.facets[1].holes = {{3, 1, 1}};
+  EXPECT_TRUE(Fails(on_edge, kFacetLine + 1, "facet hole off edges"));
+}
+
+TEST(PlcValidate, RejectsBadVolumeHoles) {
+  Plc outside = box({0, 0, 0}, {1, 1, 1});
+  outside.holes = {{5, 5, 5}};
+  relabel(outside);
+  EXPECT_TRUE(Fails(outside, kHoleLine, "volume hole in a void"));
+  EXPECT_NE(error_of(outside).find("outside the domain's closed boundary"), std::string::npos);
+
+  Plc inside = box({0, 0, 0}, {1, 1, 1});
+  inside.holes = {{0.5, 0.5, 0.5}};
+  relabel(inside);
+  EXPECT_TRUE(Fails(inside, kHoleLine, "volume hole in a void"));
+  EXPECT_NE(error_of(inside).find("inside the domain"), std::string::npos);
+
+  Plc on = box({0, 0, 0}, {1, 1, 1});
+  on.holes = {{0.5, 0.25, 1}};
+  relabel(on);
+  EXPECT_TRUE(Fails(on, kHoleLine, "volume hole off facets"));
+
+  // A hole point in the void of the cube-in-cube, where ray casting along every axis hits
+  // the void's walls on a triangle diagonal: the generic-direction fallback decides it.
+  Plc cic = merge(box({0, 0, 0}, {10, 10, 10}), box({4, 4, 4}, {6, 6, 6}));
+  cic.holes = {{5, 5, 5}};
+  relabel(cic);
+  EXPECT_EQ(error_of(cic), "");
+}
+
+TEST(PlcValidate, StandaloneSegmentsAndIsolatedVertices) {
+  Plc p = box({0, 0, 0}, {4, 4, 4});
+  p.points.push_back({1, 1, 1});
+  p.points.push_back({3, 3, 3});
+  p.points.push_back({2, 1, 3});
+  PlcFacet seg;
+  seg.polygons = {{8, 9}, {10}};
+  p.facets.push_back(seg);
+  relabel(p);
+  const PlcDomain dom = build_domain(p);
+  EXPECT_EQ(dom.vertex_count(), 11u);
+  EXPECT_EQ(dom.segments.size(), 13u);
+  EXPECT_EQ(dom.face_count(), 6u);
+
+  Plc pierce = p;
+  pierce.points[9] = {3, 3, 5};  // the segment leaves through the top
+  EXPECT_NE(error_of(pierce).find("non-crossing components"), std::string::npos);
+}
+
+TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {
+  // A standalone segment along the diagonal of the top of a box: it lies in the top facet
+  // whether or not the facet's triangulation happens to use that diagonal.
+  for (int diagonal = 0; diagonal < 2; ++diagonal) {
+    Plc p = box({0, 0, 0}, {2, 2, 2});
+    PlcFacet seg;
+    seg.polygons = {{diagonal ? 4u : 5u, diagonal ? 6u : 7u}};
+    p.facets.push_back(seg);
+    relabel(p);
+    EXPECT_NE(error_of(p).find("non-crossing components"), std::string::npos) << error_of(p);
+  }
+  // A fin through the top facet along that diagonal (listed as an edge of the fin only).
+  for (int diagonal = 0; diagonal < 2; ++diagonal) {
+    Plc p = box({0, 0, 0}, {2, 2, 2});
+    const std::uint32_t a = diagonal ? 4u : 5u, b = diagonal ? 6u : 7u;
+    const Point pa = p.points[a], pb = p.points[b];
+    p.points.push_back({pa[0], pa[1], 1});  // 8
+    p.points.push_back({pb[0], pb[1], 1});  // 9
+    p.points.push_back({pb[0], pb[1], 3});  // 10
+    p.points.push_back({pa[0], pa[1], 3});  // 11
+    PlcFacet fin;
+    fin.polygons = {{8, 9, b, 10, 11, a}, {a, b}};
+    p.facets.push_back(fin);
+    relabel(p);
+    EXPECT_NE(error_of(p).find("non-crossing components"), std::string::npos) << error_of(p);
+  }
+}
+
+TEST(PlcValidate, DataFilesAreValid) {
+  for (const char* name : {"box.poly", "l-prism.poly", "wedge60.poly", "tee.poly",
+                           "tee-admissible.poly", "cube-in-cube.poly"}) {
+    const Plc p = read_data(name);
+    EXPECT_EQ(error_of(p), "") << name;
+  }
+}
+
+}  // namespace
+}  // namespace pdr::domain::test

@@ -1,0 +1,133 @@
+// The guards of SeqRefinement for domains outside the theory (refine/seq_refinement.hpp,
+// refine/guard.hpp, refine/split.hpp): the encroachment pass, concentric shells,
+// protected lengths. The tee (70° corners and dihedrals) meshes at several sizes with no
+// encroached subsegment or subfacet and every ratio < 2, by the exact checker; domains
+// with sharper angles terminate with quality or a report, never a hang or a throw.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include "check/check.hpp"
+#include "delaunay/export.hpp"
+#include "domain/analysis.hpp"
+#include "io/mesh_io.hpp"
+#include "refine/initial.hpp"
+#include "refine/seq_refinement.hpp"
+#include "refine/split.hpp"
+#include "support/plc_fixtures.hpp"
+#include "surface/init.hpp"
+
+namespace pdr::refine {
+using namespace pdr::test;
+using namespace pdr::domain;
+using namespace pdr::surface;
+namespace {
+
+struct Sizes {
+  std::optional<double> max_volume, size;
+};
+
+struct GuardRun {
+  bool admissible = true;
+  RefineResult rr;
+  check::Report report;
+  std::size_t tets = 0;
+};
+
+GuardRun mesh(const Plc& plc, const Sizes& sz) {
+  DomainAnalysis an = analyze(plc);
+  GuardRun r;
+  r.admissible = an.report.admissible;
+  VolumeMesh vm = build_initial(init_surface(an).mesh, an.domain.plc.holes);
+  RefineOptions o;
+  o.max_volume = sz.max_volume;
+  o.size = sz.size;
+  o.d = an.report.feature.d;
+  o.admissible = an.report.admissible;
+  o.acute_vertices = acute_vertices(an.report);
+  r.rr = refine(vm, o);
+  const MeshData m = to_mesh_data(vm.dt, vm.inside);
+  r.tets = m.tets.size();
+  check::Options co;
+  co.ratio_bound = 2.0;
+  r.report = check::check_mesh(check::view_of(m), an.domain.plc, co);
+  return r;
+}
+
+TEST(RefineGuard, AcuteVerticesOfTheTee) {
+  const DomainAnalysis an = analyze(test::read_data("tee.poly"));
+  ASSERT_FALSE(an.report.admissible);
+  // The flange tips (3,10,z) and (-3,10,z), z = 0, 20: Plc vertices 3, 4, 9, 10.
+  EXPECT_EQ(acute_vertices(an.report), (std::vector<std::uint32_t>{3, 4, 9, 10}));
+}
+
+TEST(RefineGuard, TeeMeshesWithoutEncroachmentAtSeveralSizes) {
+  const Plc tee = test::read_data("tee.poly");
+  for (const Sizes sz : {Sizes{}, Sizes{1.0, {}}, Sizes{0.1, {}}, Sizes{{}, 1.0}}) {
+    SCOPED_TRACE(sz.max_volume ? "max_volume " + std::to_string(*sz.max_volume)
+                               : sz.size ? "size " + std::to_string(*sz.size) : "default");
+    const GuardRun r = mesh(tee, sz);
+    EXPECT_FALSE(r.admissible);
+    EXPECT_TRUE(r.rr.stop_reason.empty()) << r.rr.stop_reason;
+    EXPECT_TRUE(r.rr.leftovers.empty()) << r.rr.leftovers.front().reason;
+    EXPECT_TRUE(r.rr.unsplit.empty()) << r.rr.unsplit.front();
+    // Every exact check passes, encroachment.* and quality.ratio (B = 2) included.
+    EXPECT_TRUE(r.report.ok()) << check::to_text(r.report);
+    ASSERT_NE(r.report.find("encroachment.subfacets"), nullptr);
+    EXPECT_GT(r.report.find("encroachment.subfacets")->checked, 0u);
+    EXPECT_GT(r.tets, 0u);
+  }
+}
+
+// A prism over a right triangle with the angle `deg` at the origin: a wedge of dihedral
+// `deg` along the z axis, and `deg` corners in the caps.
+Plc wedge(double deg) {
+  const double t = std::tan(deg * std::numbers::pi / 180);
+  return test::prism({{0, 0}, {10, 0}, {10, 10 * t}}, 0, 4);
+}
+
+TEST(RefineGuard, SharpWedgesTerminateWithQualityOrAReport) {
+  for (const double deg : {30.0, 20.0, 15.0}) {
+    SCOPED_TRACE(std::to_string(deg) + " deg");
+    GuardRun r;
+    ASSERT_NO_THROW(r = mesh(wedge(deg), Sizes{}));
+    EXPECT_FALSE(r.admissible);
+    if (r.report.ok()) continue;  // quality reached
+    // Otherwise a well-formed report: every tet with ratio >= 2 is a listed leftover with
+    // a reason, and only quality and encroachment checks fail; what the guards refused is
+    // listed with the reason.
+    EXPECT_TRUE(!r.rr.leftovers.empty() || !r.rr.unsplit.empty() || !r.rr.stop_reason.empty());
+    for (const auto& l : r.rr.leftovers) EXPECT_FALSE(l.reason.empty());
+    for (const auto& why : r.rr.unsplit) EXPECT_FALSE(why.empty());
+    for (const auto& c : r.report.checks) {
+      if (c.status != check::Status::Fail) continue;
+      EXPECT_TRUE(c.id == "quality.ratio" || c.id.rfind("encroachment.", 0) == 0) << c.id;
+      if (c.id == "quality.ratio") {
+        EXPECT_EQ(c.violations, r.rr.leftovers.size());
+      }
+    }
+  }
+}
+
+TEST(RefineGuard, ProtectedLengthRefusesWithAReason) {
+  // A protected length larger than the wedge: no subsegment of a guarded segment may be
+  // split, and the run still ends, listing why.
+  const DomainAnalysis an = analyze(wedge(15));
+  const SurfaceInit si = init_surface(an);
+  const SplitGuard g(si.mesh, acute_vertices(an.report), 1e3);
+  ASSERT_TRUE(g.active());
+  bool refused = false;
+  for (std::uint32_t s = 0; s < si.mesh.subsegments().size(); ++s) {
+    const SplitGuard::Plan p = g.plan(si.mesh, s);
+    if (p.ok) continue;
+    refused = true;
+    EXPECT_NE(p.reason.find("refine.protected"), std::string::npos) << p.reason;
+  }
+  EXPECT_TRUE(refused);
+}
+
+}  // namespace
+}  // namespace pdr::refine
