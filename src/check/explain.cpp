@@ -1,5 +1,7 @@
-// explain_tet (explain.hpp): one tet in full. Verdicts are exact signs (adaptive predicates,
-// GMP for the ratio); the printed measures are floating-point constructions.
+// explain_tet (explain.hpp): one tet in full. Verdicts are exact signs (the checker's own,
+// check/signs.hpp, exact for any finite coordinates; GMP for the ratio); the printed
+// measures are floating-point constructions, or exact values rounded where the coordinate
+// differences leave the filters' range (tet_measures, check/fields.hpp).
 #include "check/explain.hpp"
 
 #include <algorithm>
@@ -12,10 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "check/fields.hpp"
-#include "geom/construct.hpp"
+#include "check/signs.hpp"
 #include "geom/exact.hpp"
 #include "geom/point_text.hpp"
-#include "geom/predicates.hpp"
 
 namespace pdr::check {
 
@@ -44,9 +45,8 @@ TetExplanation explain_tet(const MeshView& mesh, const Report& report, std::uint
   if (!e.indices_valid) return e;
   for (int i = 0; i < 4; ++i) e.points[i] = mesh.points[e.vertices[i]];
   const auto& [a, b, c, d] = e.points;
-  e.orientation = orient3d(a, b, c, d);
+  e.orientation = signs::orient3d(a, b, c, d);
 
-  double l2 = std::numeric_limits<double>::infinity();
   mpq_class l2_exact;
   bool first = true;
   for (int i = 0; i < 4; ++i)
@@ -54,14 +54,14 @@ TetExplanation explain_tet(const MeshView& mesh, const Report& report, std::uint
       const mpq_class q = exact::squared_distance(e.points[i], e.points[j]);
       if (first || q < l2_exact) l2_exact = q;
       first = false;
-      l2 = std::min(l2, q.get_d());
     }
-  e.shortest_edge = std::sqrt(l2);
+  e.shortest_edge = std::sqrt(l2_exact.get_d());
   if (e.orientation == Sign::Zero) return e;
 
-  e.circumcenter = construct::circumcenter(a, b, c, d);
-  e.circumradius = std::sqrt(construct::circumradius2(a, b, c, d));
-  e.ratio = *e.circumradius / e.shortest_edge;
+  const TetMeasures m = tet_measures(a, b, c, d);
+  e.circumcenter = m.circumcenter;
+  e.circumradius = m.circumradius;
+  e.ratio = m.ratio;
   const std::optional<double> B = report.options.ratio_bound;
   if (B && std::isfinite(*B) && *B > 0) {
     const mpq_class b2 = mpq_class(*B) * mpq_class(*B);
@@ -70,7 +70,7 @@ TetExplanation explain_tet(const MeshView& mesh, const Report& report, std::uint
 
   for (std::uint32_t p = 0; p < mesh.points.size(); ++p) {
     if (std::find(e.vertices.begin(), e.vertices.end(), p) != e.vertices.end()) continue;
-    const Sign s = insphere(a, b, c, d, mesh.points[p]) * e.orientation;
+    const Sign s = signs::insphere(a, b, c, d, mesh.points[p]) * e.orientation;
     if (s == Sign::Positive) {
       if (e.inside.size() < max_listed) e.inside.push_back(p);
       ++e.inside_total;

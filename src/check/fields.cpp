@@ -5,8 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include <gmpxx.h>
+
+#include "check/signs.hpp"
 #include "geom/construct.hpp"
-#include "geom/predicates.hpp"
+#include "geom/exact.hpp"
 
 namespace pdr::check {
 
@@ -22,17 +25,13 @@ double squared_length(const Point& a, const Point& b) {
   return s;
 }
 
-// R / lmin in floating point; NaN when undefined.
+// R / lmin for display; NaN when undefined.
 double tet_ratio(const MeshView& mesh, const Tet& k) {
   if (!indices_ok(mesh, k)) return std::numeric_limits<double>::quiet_NaN();
   const Point &a = mesh.points[k[0]], &b = mesh.points[k[1]], &c = mesh.points[k[2]],
               &d = mesh.points[k[3]];
-  if (orient3d(a, b, c, d) == Sign::Zero) return std::numeric_limits<double>::quiet_NaN();
-  const std::array<const Point*, 4> p{&a, &b, &c, &d};
-  double l2 = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) l2 = std::min(l2, squared_length(*p[i], *p[j]));
-  return std::sqrt(construct::circumradius2(a, b, c, d) / l2);
+  if (signs::orient3d(a, b, c, d) == Sign::Zero) return std::numeric_limits<double>::quiet_NaN();
+  return tet_measures(a, b, c, d).ratio;
 }
 
 std::size_t named_prefix(const std::string& kind, std::size_t n) {
@@ -42,6 +41,40 @@ std::size_t named_prefix(const std::string& kind, std::size_t n) {
 }
 
 }  // namespace
+
+TetMeasures tet_measures(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const std::array<const Point*, 4> p{&a, &b, &c, &d};
+  bool in_range = true;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      for (int k = 0; k < 3; ++k)
+        in_range = in_range && signs::entry_in_range((*p[i])[k] - (*p[j])[k]);
+  TetMeasures m;
+  if (in_range) {
+    double l2 = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) l2 = std::min(l2, squared_length(*p[i], *p[j]));
+    m.circumcenter = construct::circumcenter(a, b, c, d);
+    m.circumradius = std::sqrt(construct::circumradius2(a, b, c, d));
+    m.shortest_edge = std::sqrt(l2);
+    m.ratio = std::sqrt(construct::circumradius2(a, b, c, d) / l2);
+    return m;
+  }
+  mpq_class l2;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const mpq_class q = exact::squared_distance(*p[i], *p[j]);
+      if ((i == 0 && j == 1) || q < l2) l2 = q;
+    }
+  const mpq_class r2 = exact::circumradius2(a, b, c, d);
+  const auto o = exact::circumcenter(a, b, c, d);
+  for (int k = 0; k < 3; ++k) m.circumcenter[k] = o[k].get_d();
+  m.circumradius = std::sqrt(r2.get_d());
+  m.shortest_edge = std::sqrt(l2.get_d());
+  const mpq_class q = r2 / l2;  // scale-free: a normal double whatever the coordinates
+  m.ratio = std::sqrt(q.get_d());
+  return m;
+}
 
 std::vector<std::vector<std::uint32_t>> vertex_tets(const MeshView& mesh) {
   std::vector<std::vector<std::uint32_t>> inc(mesh.points.size());

@@ -28,6 +28,12 @@ bool in_range(double d) {
   return a == 0 || (a >= kMinEntry && a <= kMaxEntry);
 }
 
+}  // namespace
+
+bool entry_in_range(double d) { return in_range(d); }
+
+namespace {
+
 std::optional<Sign> decide(double det, double bound) {
   if (det > bound) return Sign::Positive;
   if (-det > bound) return Sign::Negative;

@@ -35,6 +35,11 @@ namespace pdr::check::signs {
 // report the difference as a count ("exact_evaluations").
 std::uint64_t exact_evaluations();
 
+// The filters' precondition on an entry (a coordinate difference): 0 or in [2^-150, 2^150].
+// Outside it every sign above is still exact (stages 2 and 3); floating-point measures
+// computed from such entries may underflow or overflow.
+bool entry_in_range(double d);
+
 // orient3d(a,b,c,d) = sign det[b-a, c-a, d-a].
 Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d);
 // det3(a0,a1,b0,b1,c0,c1) = sign det[a1-a0, b1-b0, c1-c0].

@@ -58,6 +58,36 @@ TEST(Explain, CleanTetHasNothingInsideAndNoFindings) {
   EXPECT_NEAR(*e.ratio, std::sqrt(3.0) / 2.0, 1e-12);  // Kuhn tet: R = sqrt(3)/2, lmin = 1
 }
 
+// A Kuhn grid scaled by 2^-366 (edges about 1e-110): every coordinate difference is below
+// the filters' range. The orientation, the spheres and the ratio must come out as for the
+// unit grid (the checker's own range handling), not as the underflowed floating-point
+// values (a zero orientation, an empty or NaN ratio).
+TEST(Explain, TinyTetIsExplainedAsItsUnitCopy) {
+  const MeshData unit = kuhn_grid(2);
+  MeshData tiny = unit;
+  for (Point& p : tiny.points)
+    for (double& x : p) x = std::ldexp(x, -366);
+  const Report ru = full_report(unit), rt = full_report(tiny);
+  EXPECT_TRUE(rt.ok());
+  for (std::uint64_t t = 0; t < unit.tets.size(); ++t) {
+    const TetExplanation u = explain_tet(view_of(unit), ru, t);
+    const TetExplanation e = explain_tet(view_of(tiny), rt, t);
+    EXPECT_EQ(e.orientation, u.orientation) << "tet " << t;
+    EXPECT_EQ(e.inside_total, u.inside_total) << "tet " << t;
+    EXPECT_EQ(e.cospherical_total, u.cospherical_total) << "tet " << t;
+    ASSERT_TRUE(e.ratio.has_value() && u.ratio.has_value()) << "tet " << t;
+    EXPECT_NEAR(*e.ratio, *u.ratio, 1e-12 * *u.ratio) << "tet " << t;
+    EXPECT_EQ(e.ratio_below_bound, u.ratio_below_bound) << "tet " << t;
+    ASSERT_TRUE(e.circumradius.has_value());
+    EXPECT_NEAR(std::ldexp(*e.circumradius, 366), *u.circumradius, 1e-12) << "tet " << t;
+  }
+  const std::vector<TetField> fu = tet_fields(view_of(unit), ru);
+  const std::vector<TetField> ft = tet_fields(view_of(tiny), rt);
+  ASSERT_EQ(ft[0].name, "ratio");
+  for (std::size_t t = 0; t < unit.tets.size(); ++t)
+    EXPECT_NEAR(ft[0].values[t], fu[0].values[t], 1e-12 * fu[0].values[t]) << "tet " << t;
+}
+
 TEST(Explain, OutOfRangeTetThrows) {
   const MeshData m = kuhn_grid(1);
   EXPECT_THROW(explain_tet(view_of(m), full_report(m), m.tets.size()), std::out_of_range);
