@@ -19,6 +19,13 @@ foreach(t pdr_check pdr_geom pdr_mesh)
     "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>"
     "$<INSTALL_INTERFACE:${pdr_install_include}>")
 endforeach()
+# A sanitizer build's static libraries need the sanitizer runtimes in whatever links them:
+# the installed targets carry the link options (and the compile options, so that the
+# consumer's own code agrees on the instrumentation).
+if(PDR_SANITIZE)
+  target_link_options(pdr_geom INTERFACE -fsanitize=address,undefined)
+  target_compile_options(pdr_geom INTERFACE -fsanitize=address,undefined)
+endif()
 set_target_properties(pdr_check PROPERTIES EXPORT_NAME check)
 set_target_properties(pdr_geom PROPERTIES EXPORT_NAME geom)
 set_target_properties(pdr_mesh PROPERTIES EXPORT_NAME mesh)

@@ -1,18 +1,31 @@
 // Fuzz target: every adaptive predicate (geom/predicates.hpp) must agree with the GMP
-// reference (geom/exact.hpp), SoS variants included. The input picks coordinates from a
-// small alphabet (integers, halves, tiny offsets, ulp neighbours) so that exactly and
-// nearly degenerate configurations are frequent. Property: tests/geom (same laws).
-// Coordinates stay in the range the adaptive predicates are documented for (predicates.hpp:
-// 0 or magnitude in [2^-130, 2^130]); pdr's readers reject input outside it.
+// reference (geom/exact.hpp), SoS variants included, for any finite coordinates. The first
+// byte picks how the 15 coordinates are drawn:
+//   0, 1  from a small alphabet (integers, halves, tiny offsets, ulp neighbours), so that
+//         exactly and nearly degenerate configurations are frequent;
+//   2     the same configurations scaled by 2^k, k from the next byte pair in
+//         [-1074, 1023] (tiny and huge degenerate inputs, where products underflow or
+//         overflow);
+//   3     raw doubles from the input's bytes (any finite value; NaN and inf map to 0).
+// Property: tests/geom (same laws).
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <cstring>
 
 #include "fuzz_target.hpp"
 #include "geom/exact.hpp"
 #include "geom/predicates.hpp"
 
 namespace {
+
+double finite_or_zero(double x) { return std::isfinite(x) ? x : 0.0; }
+
+double raw_double(const std::uint8_t* b) {
+  double x = 0;
+  std::memcpy(&x, b, sizeof x);
+  return finite_or_zero(x);
+}
 
 double coordinate(std::uint8_t b) {
   static const double base[] = {0.0, 1.0, -1.0, 2.0, 3.0, 0.5, 1e-3, 7.0};
@@ -41,10 +54,20 @@ void agree(pdr::Sign fast, pdr::Sign exact, const char* what) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size < 15) return 0;
+  if (size < 18) return 0;
+  const int mode = data[0] % 4;
+  const int scale = static_cast<int>((data[1] | (data[2] << 8)) % 2098) - 1074;
+  data += 3;
+  size -= 3;
+  if (mode == 3 && size < 15 * 8) return 0;
   pdr::Point p[5];
   for (int i = 0; i < 5; ++i)
-    for (int k = 0; k < 3; ++k) p[i][k] = coordinate(data[3 * i + k]);
+    for (int k = 0; k < 3; ++k) {
+      const int j = 3 * i + k;
+      p[i][k] = mode == 3 ? raw_double(data + 8 * j)
+                : mode == 2 ? finite_or_zero(std::ldexp(coordinate(data[j]), scale))
+                            : coordinate(data[j]);
+    }
   g_points = p;
   namespace ex = pdr::exact;
   agree(pdr::orient2d(p[0].data(), p[1].data(), p[2].data()),

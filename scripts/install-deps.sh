@@ -2,6 +2,7 @@
 # Install pdr's dependencies from Debian packages. Idempotent: installs only what is missing.
 #   scripts/install-deps.sh          build + run dependencies
 #   scripts/install-deps.sh --tests  also the test-only dependencies (RapidCheck, GoogleTest,
+#                                    clang and its libFuzzer runtime for the fuzz build,
 #                                    TetGen and Gmsh to produce meshes for the checker tests)
 #   scripts/install-deps.sh --bench  also the benchmark-only dependencies (CGAL, TetGen)
 set -euo pipefail
@@ -10,7 +11,7 @@ pkgs=(build-essential cmake ninja-build pkg-config libgmp-dev libboost-dev libcl
       nlohmann-json3-dev libmetis-dev libopenmpi-dev openmpi-bin)
 for arg in "$@"; do
   case "$arg" in
-    --tests) pkgs+=(librapidcheck-dev libgtest-dev tetgen gmsh) ;;
+    --tests) pkgs+=(librapidcheck-dev libgtest-dev tetgen gmsh clang libclang-rt-14-dev) ;;
     --bench) pkgs+=(libcgal-dev tetgen) ;;
     *) echo "install-deps.sh: unknown option '$arg' (use --tests or --bench)" >&2; exit 2 ;;
   esac

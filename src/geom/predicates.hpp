@@ -45,8 +45,9 @@
 // multiple of 2^(-E-52) of magnitude at most 2^E (e.g. 0, or any double with magnitude in
 // [2^-E, 2^E]), E = 450 (orient2d), 270 (orient3d), 190 (incircle, incircle3 and their
 // _sos), 130 (insphere, insphere_sos): about 1e+-135, 1e+-81, 1e+-57, 1e+-39. Beyond it
-// (when the filter is unsure) stage 2 hands the input to the GMP reference, exact.hpp,
-// which has no range limit (stage2_range.hpp): exact for all finite doubles. No inf/NaN.
+// the filter's answer is not used (a product may underflow: see below) and stage 2 hands
+// the input to the GMP reference, exact.hpp, which has no range limit (stage2_range.hpp):
+// exact for all finite doubles (fuzz_predicates checks it). No inf/NaN.
 //
 // Speed: the filter is inline (filter.hpp, no allocation, proven bound valid even under
 // FMA contraction); stage 2 is out of line in pdr_geom (stage2.hpp, stack arrays only).
@@ -55,38 +56,50 @@
 #include "geom/filter.hpp"
 #include "geom/point.hpp"
 #include "geom/stage2.hpp"
+#include "geom/stage2_range.hpp"
 
 namespace pdr {
 
+// Each predicate trusts its filter only when every coordinate is in the filter's range
+// (0 or magnitude in [2^-E, 2^E], stage2_range.hpp): outside it a product may underflow to
+// zero or a lift overflow, and neither error is covered by the filter's relative bound (a
+// zero permanent may then hide a nonzero determinant, and a small term lost to underflow
+// may be the one that decides the sign), so stage 2 (the GMP reference there) decides. The
+// range test is a few compares per coordinate, on well-predicted branches.
 inline Sign orient2d(const double* a, const double* b, const double* c) {
   const Filtered f = filter::orient2d(a, b, c);
-  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  if (f != Filtered::Unsure && stage2::in_range<450>({a, b, c}, 2)) [[likely]]
+    return static_cast<Sign>(f);
   return stage2::orient2d(a, b, c);
 }
 
 inline Sign incircle(const double* a, const double* b, const double* c, const double* d) {
   const Filtered f = filter::incircle(a, b, c, d);
-  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  if (f != Filtered::Unsure && stage2::in_range<190>({a, b, c, d}, 2)) [[likely]]
+    return static_cast<Sign>(f);
   return stage2::incircle(a, b, c, d);
 }
 
 inline Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
   const Filtered f = filter::orient3d(a.data(), b.data(), c.data(), d.data());
-  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  if (f != Filtered::Unsure && stage2::in_range<270>({a.data(), b.data(), c.data(), d.data()}, 3)) [[likely]]
+    return static_cast<Sign>(f);
   return stage2::orient3d(a, b, c, d);
 }
 
 inline Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d,
                      const Point& e) {
   const Filtered f = filter::insphere(a.data(), b.data(), c.data(), d.data(), e.data());
-  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  if (f != Filtered::Unsure && stage2::in_range<130>({a.data(), b.data(), c.data(), d.data(), e.data()}, 3)) [[likely]]
+    return static_cast<Sign>(f);
   return stage2::insphere(a, b, c, d, e);
 }
 
 // Precondition: a, b, c, d coplanar. Zero if a, b, c are collinear.
 inline Sign incircle3(const Point& a, const Point& b, const Point& c, const Point& d) {
   const Filtered f = filter::incircle3(a.data(), b.data(), c.data(), d.data());
-  if (f != Filtered::Unsure) [[likely]] return static_cast<Sign>(f);
+  if (f != Filtered::Unsure && stage2::in_range<190>({a.data(), b.data(), c.data(), d.data()}, 3)) [[likely]]
+    return static_cast<Sign>(f);
   return stage2::incircle3(a, b, c, d);
 }
 

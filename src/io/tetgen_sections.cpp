@@ -67,12 +67,13 @@ NodeSection read_node_file(const std::string& path, bool keep_lines) {
 
 std::uint32_t to_index(TextScanner& s, std::int64_t index, std::uint32_t base, std::size_t n,
                        const char* what) {
-  const std::int64_t i = index - static_cast<std::int64_t>(base);
-  if (i < 0 || static_cast<std::uint64_t>(i) >= n)
+  // Compared before subtracting: index - base would overflow for index near -2^63.
+  if (index < static_cast<std::int64_t>(base) ||
+      static_cast<std::uint64_t>(index - static_cast<std::int64_t>(base)) >= n)
     s.fail(std::string(what) + " " + std::to_string(index) + " is out of range: the points "
            "are numbered " + std::to_string(base) + ".." +
            std::to_string(static_cast<std::int64_t>(base + n) - 1) + "; fix the index");
-  return static_cast<std::uint32_t>(i);
+  return static_cast<std::uint32_t>(index - static_cast<std::int64_t>(base));
 }
 
 Point read_indexed_point(TextScanner& s, const std::string& what) {

@@ -151,5 +151,26 @@ TEST(Predicates, ExtremeScales) {
   }
 }
 
+// Outside the filters' range (found by fuzz_predicates over the whole double range): a unit
+// square and right tetrahedron scaled by 2^-1074 (every product underflows to zero, so the
+// permanent is zero and the filter says Zero), and an incircle whose deciding term is a
+// product that underflows while a huge lift keeps the permanent large (the filter said -1,
+// the exact sign is +1). The predicates must give the GMP reference's signs.
+TEST(Predicates, OutsideTheRangeTheFilterIsNotTrusted) {
+  const double t = 0x1p-1074;
+  const double a[2] = {0, 0}, b[2] = {t, 0}, c[2] = {0, t};
+  EXPECT_EQ(orient2d(a, b, c), Sign::Positive);
+  EXPECT_EQ(orient2d(a, b, c), exact::orient2d(a, b, c));
+  const Point o{0, 0, 0}, x{t, 0, 0}, y{0, t, 0}, z{0, 0, t};
+  EXPECT_EQ(orient3d(o, x, y, z), exact::orient3d(o, x, y, z));
+  EXPECT_NE(orient3d(o, x, y, z), Sign::Zero);
+  const double p[4][2] = {{-0x1.9cf6113e0fb51p-751, 0x1.0cb80a9e9e4f6p+389},
+                          {-0x1.60be2b2655143p-229, -0x1.36c4e206bcf1ep-702},
+                          {0x1.20df6c7a484ecp-920, -0x1.94a303fc7213dp-933},
+                          {0x1.522deca9abc22p-653, 0x1.a7291fda766c1p-940}};
+  EXPECT_EQ(incircle(p[0], p[1], p[2], p[3]), exact::incircle(p[0], p[1], p[2], p[3]));
+  EXPECT_EQ(exact::incircle(p[0], p[1], p[2], p[3]), Sign::Positive);
+}
+
 }  // namespace
 }  // namespace pdr

@@ -109,6 +109,11 @@ std::vector<Case> cases() {
                                                         {"m.face", "1 1\n1 1 2 3 x\n"}}},
       // TetGen .poly / .smesh
       {"poly corner range", "p.poly", with_line(poly, 8, "3 1 2 9"), 8, "out of range", {}, true},
+      // index - base overflowed int64 before the range test (found by UBSan)
+      {"poly corner most negative", "p.poly",
+       with_line(poly, 8, "3 1 2 -9223372036854775808"), 8, "out of range", {}, true},
+      {"ele index most negative", "m.ele", with_line(kEle1, 2, "1 1 2 3 -9223372036854775808"),
+       2, "out of range", {{"m.node", kNode4}}},
       {"poly empty facet", "p.poly", with_line(poly, 7, "0"), 7, "at least one polygon", {},
        true},
       {"poly missing node", "p.poly", "0 3 0 0\n1 0\n1\n3 1 2 3\n", 1, "p.node", {}, true},
