@@ -5,7 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,6 +35,80 @@ std::vector<std::string> box_lines() {
           "1 0 1",     "4 3 4 8 7", "1 0 1",     "4 4 1 5 8",   "0",           "0"};
 }
 
+// A TetGen file's records (comments and blank lines dropped), each as its numbers.
+std::vector<std::vector<double>> records(const std::string& file) {
+  std::ifstream in(file);
+  std::vector<std::vector<double>> out;
+  for (std::string line; std::getline(in, line);) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream s(line);
+    std::vector<double> r;
+    for (double x; s >> x;) r.push_back(x);
+    if (!r.empty()) out.push_back(r);
+  }
+  return out;
+}
+
+using P3 = std::array<double, 3>;
+P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+P3 cross(const P3& a, const P3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// The summary's measures, recomputed here from the written .node/.ele by other formulas
+// than pdr's: the circumradius from the circumcenter solved by Cramer's rule, dihedral
+// angles as the angle at each edge between the other two vertices projected onto the
+// edge's normal plane (atan2, not acos of face normals).
+struct Measures {
+  std::size_t vertices = 0, tets = 0, faces = 0;
+  double ratio_min = std::numeric_limits<double>::infinity(), ratio_max = 0;
+  double dihedral_min = 180, dihedral_max = 0;
+  double shortest_edge = std::numeric_limits<double>::infinity();
+};
+
+Measures measure(const std::string& prefix) {
+  const auto node = records(prefix + ".node"), ele = records(prefix + ".ele");
+  const auto face = records(prefix + ".face");
+  Measures m;
+  m.vertices = static_cast<std::size_t>(node.at(0).at(0));
+  m.tets = static_cast<std::size_t>(ele.at(0).at(0));
+  m.faces = static_cast<std::size_t>(face.at(0).at(0));
+  const int base = static_cast<int>(node.at(1).at(0));
+  std::vector<P3> pts;
+  for (std::size_t i = 1; i < node.size(); ++i) pts.push_back({node[i][1], node[i][2], node[i][3]});
+  for (std::size_t t = 1; t < ele.size(); ++t) {
+    std::array<P3, 4> p;
+    for (int k = 0; k < 4; ++k) p[k] = pts.at(static_cast<std::size_t>(ele[t][1 + k]) - base);
+    double l2 = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        l2 = std::min(l2, dot(sub(p[i], p[j]), sub(p[i], p[j])));
+        const P3 e = sub(p[j], p[i]);
+        int r = 0;
+        while (r == i || r == j) ++r;
+        const int s = 6 - i - j - r;
+        const P3 u = cross(e, cross(sub(p[r], p[i]), e)), v = cross(e, cross(sub(p[s], p[i]), e));
+        const double deg = std::atan2(std::sqrt(dot(cross(u, v), cross(u, v))), dot(u, v)) *
+                           180 / 3.14159265358979323846;
+        m.dihedral_min = std::min(m.dihedral_min, deg);
+        m.dihedral_max = std::max(m.dihedral_max, deg);
+      }
+    m.shortest_edge = std::min(m.shortest_edge, std::sqrt(l2));
+    // Circumcenter c - p0 = x solves 2 (p_k - p0) . x = |p_k - p0|^2, k = 1..3.
+    const P3 a = sub(p[1], p[0]), b = sub(p[2], p[0]), c = sub(p[3], p[0]);
+    const double det = dot(a, cross(b, c));
+    const P3 x = {dot(a, a) / 2, dot(b, b) / 2, dot(c, c) / 2};
+    const P3 bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
+    P3 o;
+    for (int k = 0; k < 3; ++k) o[k] = (x[0] * bc[k] + x[1] * ca[k] + x[2] * ab[k]) / det;
+    const double ratio = std::sqrt(dot(o, o) / l2);
+    m.ratio_min = std::min(m.ratio_min, ratio);
+    m.ratio_max = std::max(m.ratio_max, ratio);
+  }
+  return m;
+}
+
 std::string joined(const std::vector<std::string>& lines) {
   std::string s;
   for (const auto& l : lines) s += l + "\n";
@@ -36,26 +116,41 @@ std::string joined(const std::vector<std::string>& lines) {
 }
 
 TEST_F(Cli, MeshWritesEveryFormatAndTheJsonSummaryHasTheDocumentedFields) {
+  const auto start = std::chrono::steady_clock::now();
   const Outcome r = run("mesh " + data("cube-in-cube.poly") + " -o " + path("m") +
                         " --formats node,vtu,msh,mesh --json");
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);  // throws unless the output is one JSON value
   ASSERT_TRUE(j.is_object());
   EXPECT_EQ(j["command"], "mesh");
-  EXPECT_GT(j["vertices"].get<int>(), 16);
-  EXPECT_GT(j["tets"].get<int>(), 100);
-  for (const char* phase : {"analyze", "surface", "initial", "refine", "write", "check"})
-    EXPECT_GE(j["seconds"][phase].get<double>(), 0.0) << phase;
-  EXPECT_GT(j["tets_per_second"].get<double>(), 0.0);
-  EXPECT_GT(j["peak_rss_bytes"].get<double>(), 0.0);
-  EXPECT_GT(j["ratio_min"].get<double>(), 0.0);
-  EXPECT_LE(j["ratio_min"].get<double>(), j["ratio_max"].get<double>());
+  // Counts and measures equal those recomputed from the written files.
+  const Measures m = measure(path("m"));
+  EXPECT_GT(m.tets, 100u);
+  EXPECT_EQ(j["vertices"].get<std::size_t>(), m.vertices);
+  EXPECT_EQ(j["tets"].get<std::size_t>(), m.tets);
+  EXPECT_EQ(j["boundary_faces"].get<std::size_t>(), m.faces);
+  EXPECT_NEAR(j["ratio_min"].get<double>(), m.ratio_min, 1e-9 * m.ratio_min);
+  EXPECT_NEAR(j["ratio_max"].get<double>(), m.ratio_max, 1e-9 * m.ratio_max);
   EXPECT_LT(j["ratio_max"].get<double>(), 2.0);
-  // Ratio < 2 does not bound dihedral angles (slivers: the cube-in-cube mesh has a tet of
-  // 4 nearly coplanar cospherical vertices, whose angles round to 0 and 180 degrees).
-  EXPECT_GE(j["dihedral_min_deg"].get<double>(), 0.0);
-  EXPECT_LT(j["dihedral_min_deg"].get<double>(), j["dihedral_max_deg"].get<double>());
-  EXPECT_LE(j["dihedral_max_deg"].get<double>(), 180.0);
+  EXPECT_NEAR(j["shortest_edge"].get<double>(), m.shortest_edge, 1e-12 * m.shortest_edge);
+  // Ratio < 2 does not bound dihedral angles (slivers: the cube-in-cube mesh has tets of 4
+  // nearly coplanar cospherical vertices); near 0 and 180 degrees the two formulas differ
+  // by rounding, hence the 1e-4 degree tolerance.
+  EXPECT_NEAR(j["dihedral_min_deg"].get<double>(), m.dihedral_min, 1e-4);
+  EXPECT_NEAR(j["dihedral_max_deg"].get<double>(), m.dihedral_max, 1e-4);
+  // Every phase ran (a positive time on a nanosecond clock), the phases fit in the run's
+  // wall time, and the rate is the tets over the refinement's time.
+  double phases = 0;
+  for (const char* phase : {"analyze", "surface", "initial", "refine", "write", "check"}) {
+    EXPECT_GT(j["seconds"][phase].get<double>(), 0.0) << phase;
+    phases += j["seconds"][phase].get<double>();
+  }
+  EXPECT_LT(phases, wall);
+  EXPECT_NEAR(j["tets_per_second"].get<double>() * j["seconds"]["refine"].get<double>(),
+              static_cast<double>(m.tets), 1e-6 * static_cast<double>(m.tets));
+  EXPECT_GT(j["peak_rss_bytes"].get<double>(), 1e6);  // more than the binary's own pages
   EXPECT_EQ(j["admissible"], true);
   EXPECT_TRUE(j["admissibility_violations"].is_array());
   EXPECT_TRUE(j["admissibility_violations"].empty());
@@ -68,6 +163,28 @@ TEST_F(Cli, MeshWritesEveryFormatAndTheJsonSummaryHasTheDocumentedFields) {
     const Outcome c = run("check " + path(m) + " --domain " + data("cube-in-cube.poly") +
                           " --ratio 2");
     EXPECT_EQ(c.code, 0) << m << "\n" << c.out;
+  }
+}
+
+// On meshes whose extreme dihedral angles are not 0 and 180 degrees, every measure of the
+// summary equals the one recomputed from the written files (a summary that rounds, skips a
+// tet or mixes up two fields fails here).
+TEST_F(Cli, MeshSummaryMeasuresEqualThoseOfTheWrittenMesh) {
+  for (const char* d : {"box.poly", "l-prism.poly"}) {
+    const Outcome r = run("mesh " + data(d) + " -o " + path("q") + " --max-volume 0.05 --json");
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    const Measures m = measure(path("q"));
+    EXPECT_EQ(j["tets"].get<std::size_t>(), m.tets) << d;
+    EXPECT_EQ(j["vertices"].get<std::size_t>(), m.vertices) << d;
+    EXPECT_EQ(j["boundary_faces"].get<std::size_t>(), m.faces) << d;
+    EXPECT_GT(m.dihedral_min, 1.0) << d;
+    EXPECT_LT(m.dihedral_max, 179.0) << d;
+    EXPECT_NEAR(j["dihedral_min_deg"].get<double>(), m.dihedral_min, 1e-9) << d;
+    EXPECT_NEAR(j["dihedral_max_deg"].get<double>(), m.dihedral_max, 1e-9) << d;
+    EXPECT_NEAR(j["ratio_min"].get<double>(), m.ratio_min, 1e-9 * m.ratio_min) << d;
+    EXPECT_NEAR(j["ratio_max"].get<double>(), m.ratio_max, 1e-9 * m.ratio_max) << d;
+    EXPECT_NEAR(j["shortest_edge"].get<double>(), m.shortest_edge, 1e-12) << d;
   }
 }
 
