@@ -12,6 +12,7 @@
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
 #include "io/error.hpp"
+#include "mesh/tet_store.hpp"
 
 namespace {
 
@@ -74,6 +75,10 @@ int main(int argc, char** argv) {
   } catch (const std::system_error& e) {
     std::cerr << "pdr: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const pdr::CapacityError& e) {
+    // A resource limit like the vertex cap: exit 3 with the reason; nothing was written.
+    std::cerr << "pdr: " << e.what() << "\n";
+    return kExitNotGuaranteed;
   } catch (const std::bad_alloc&) {
     std::cerr << "pdr: out of memory\n";
     return kExitInternal;

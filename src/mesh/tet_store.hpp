@@ -20,11 +20,16 @@
 //   - dead slots have v(t,0) == kDeadVertex and are chained in a free list through
 //     adj(t,0); create() reuses them last-in first-out (good cache locality after a
 //     Bowyer-Watson commit, which frees and refills the same slots).
+// Capacity: ids and half-faces are 32-bit, so a store holds at most kMaxTetSlots slots
+// (half_face(t, 3) of the last one stays below kNoHalfFace); offsets into the records are
+// computed in size_t (8 * t wraps 32 bits from t = 2^29). create() throws CapacityError
+// instead of wrapping.
 // Paper §1.2: the store is the T_i that a cavity commit turns into T_{i+1}.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,26 +45,45 @@ inline constexpr VertexId kNoVertex = 0xFFFFFFFDu;     // "none" in results
 inline constexpr TetId kNoTet = 0xFFFFFFFFu;
 inline constexpr HalfFace kNoHalfFace = 0xFFFFFFFFu;
 
+// The most tet slots a store may hold: tet ids 0 .. 2^30 - 2, whose half-faces 4t + f stay
+// below kNoHalfFace (and the ids below kNoTet).
+inline constexpr std::size_t kMaxTetSlots = (std::size_t{1} << 30) - 1;
+
+// A store (or a vertex count) that would outgrow its 32-bit ids: a resource limit, reported
+// like the vertex cap, never a silent wrap-around.
+class CapacityError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 constexpr HalfFace half_face(TetId t, int f) { return 4 * t + static_cast<std::uint32_t>(f); }
 constexpr TetId tet_of(HalfFace h) { return h >> 2; }
 constexpr int face_of(HalfFace h) { return static_cast<int>(h & 3u); }
 
 class TetStore {
  public:
+  // The offset of tet t's record in the flat array (size_t: no wrap-around for any id).
+  static constexpr std::size_t record_offset(TetId t) { return kRecord * std::size_t{t}; }
+
+  TetStore() = default;
+  // A store refusing to grow beyond `max_slots` (at most kMaxTetSlots; tests use less).
+  explicit TetStore(std::size_t max_slots)
+      : max_slots_(max_slots < kMaxTetSlots ? max_slots : kMaxTetSlots) {}
+
   // ---- reading -----------------------------------------------------------------------
-  VertexId vertex(TetId t, int slot) const { return data_[kRecord * t + slot]; }
-  const VertexId* vertices(TetId t) const { return &data_[kRecord * t]; }
+  VertexId vertex(TetId t, int slot) const { return data_[record_offset(t) + slot]; }
+  const VertexId* vertices(TetId t) const { return &data_[record_offset(t)]; }
   // The half-face across face f of t (neighbour tet and its back face).
-  HalfFace opposite(TetId t, int f) const { return data_[kRecord * t + 4 + f]; }
+  HalfFace opposite(TetId t, int f) const { return data_[record_offset(t) + 4 + f]; }
   HalfFace opposite(HalfFace h) const { return opposite(tet_of(h), face_of(h)); }
   TetId neighbour(TetId t, int f) const { return tet_of(opposite(t, f)); }
   int back_face(TetId t, int f) const { return face_of(opposite(t, f)); }
 
-  bool is_alive(TetId t) const { return data_[kRecord * t] != kDeadVertex; }
-  bool is_ghost(TetId t) const { return data_[kRecord * t + 3] == kGhostVertex; }
+  bool is_alive(TetId t) const { return data_[record_offset(t)] != kDeadVertex; }
+  bool is_ghost(TetId t) const { return data_[record_offset(t) + 3] == kGhostVertex; }
 
   // A hint to the cache: tet t's record will be read soon (no effect on the contents).
-  void prefetch(TetId t) const { __builtin_prefetch(&data_[kRecord * t]); }
+  void prefetch(TetId t) const { __builtin_prefetch(&data_[record_offset(t)]); }
 
   // Slots ever used (live + free); tet ids are < slots().
   std::size_t slots() const { return data_.size() / kRecord; }
@@ -83,24 +107,28 @@ class TetStore {
     TetId t;
     if (free_head_ != kNoTet) {
       t = free_head_;
-      free_head_ = data_[kRecord * t + 4];
+      free_head_ = data_[record_offset(t) + 4];
     } else {
+      if (slots() >= max_slots_)
+        throw CapacityError("tet_store.capacity: " + std::to_string(slots()) +
+                            " tet slots is the most 32-bit ids allow (2^30 - 1); use a coarser "
+                            "size, or split the domain across ranks");
       t = static_cast<TetId>(slots());
       data_.resize(data_.size() + kRecord);
     }
     set_vertices(t, a, b, c, d);
-    for (int f = 0; f < 4; ++f) data_[kRecord * t + 4 + f] = kNoHalfFace;
+    for (int f = 0; f < 4; ++f) data_[record_offset(t) + 4 + f] = kNoHalfFace;
     ++live_;
     return t;
   }
   void set_vertices(TetId t, VertexId a, VertexId b, VertexId c, VertexId d) {
-    VertexId* p = &data_[kRecord * t];
+    VertexId* p = &data_[record_offset(t)];
     p[0] = a;
     p[1] = b;
     p[2] = c;
     p[3] = d;
   }
-  void set_vertex(TetId t, int slot, VertexId x) { data_[kRecord * t + slot] = x; }
+  void set_vertex(TetId t, int slot, VertexId x) { data_[record_offset(t) + slot] = x; }
   // Glue two half-faces to each other (both directions).
   void link(HalfFace x, HalfFace y) {
     set_opposite(x, y);
@@ -108,14 +136,14 @@ class TetStore {
   }
   // Set one direction only (the caller restores the involution before it reads again).
   void set_opposite(HalfFace x, HalfFace y) {
-    data_[kRecord * tet_of(x) + 4 + face_of(x)] = y;
+    data_[record_offset(tet_of(x)) + 4 + face_of(x)] = y;
   }
 
   // Free a live tet (its slot goes on the free list). Neighbours still pointing at it must
   // be relinked by the caller.
   void destroy(TetId t) {
-    data_[kRecord * t] = kDeadVertex;
-    data_[kRecord * t + 4] = free_head_;
+    data_[record_offset(t)] = kDeadVertex;
+    data_[record_offset(t) + 4] = free_head_;
     free_head_ = t;
     --live_;
   }
@@ -125,8 +153,9 @@ class TetStore {
   std::vector<std::string> check_topology() const;
 
  private:
-  static constexpr std::uint32_t kRecord = 8;  // 4 vertices + 4 neighbours per tet
+  static constexpr std::size_t kRecord = 8;  // 4 vertices + 4 neighbours per tet
   std::vector<std::uint32_t> data_;
+  std::size_t max_slots_ = kMaxTetSlots;
   TetId free_head_ = kNoTet;
   std::size_t live_ = 0;
 };

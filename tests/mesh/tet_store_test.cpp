@@ -46,6 +46,33 @@ TEST(HalfFace, EncodesTetAndFace) {
     }
 }
 
+// The last slot a store may hold: its record offset computed without wrap-around (8 t
+// wraps 32 bits from t = 2^29), its half-faces distinct from kNoHalfFace, its id from
+// kNoTet. Nothing is allocated.
+TEST(TetStore, LargestSlotIndexesWithoutWrapAround) {
+  const TetId last = static_cast<TetId>(kMaxTetSlots - 1);
+  EXPECT_EQ(last, 0x3FFFFFFEu);
+  EXPECT_EQ(TetStore::record_offset(last), std::size_t{8} * 0x3FFFFFFEu);
+  EXPECT_GT(TetStore::record_offset(last), std::size_t{0xFFFFFFFFu});  // beyond 32 bits
+  EXPECT_EQ(TetStore::record_offset(TetId{1} << 29), std::size_t{1} << 32);
+  EXPECT_NE(last, kNoTet);
+  for (int f = 0; f < 4; ++f) {
+    EXPECT_NE(half_face(last, f), kNoHalfFace);
+    EXPECT_EQ(tet_of(half_face(last, f)), last);
+  }
+}
+
+// A store at its slot limit throws CapacityError instead of handing out a wrapped id; a
+// freed slot can still be reused.
+TEST(TetStore, RefusesToGrowBeyondItsLimit) {
+  TetStore s(3);
+  for (VertexId v = 0; v < 3; ++v) s.create(v, v + 1, v + 2, v + 3);
+  EXPECT_THROW(s.create(7, 8, 9, 10), CapacityError);
+  s.destroy(1);
+  EXPECT_EQ(s.create(7, 8, 9, 10), 1u);
+  EXPECT_EQ(s.slots(), 3u);
+}
+
 TEST(TetStore, SmallestClosedStoreIsValid) {
   const TetStore s = five_tets();
   EXPECT_EQ(s.live(), 5u);
