@@ -1,4 +1,8 @@
-// SeqRefinement (paper §3, Fig. 2); see refine/seq_refinement.hpp.
+// SeqRefinement (paper §3, Fig. 2); see refine/seq_refinement.hpp. The main loop and
+// Refine(t), Refine(f), Refine(s) are here; beside them: the work queue (work_queue.hpp),
+// the vertex budget (budget.hpp), the guards outside the theory (guard.hpp, split.hpp),
+// the closure encroachment tests (closure.hpp), the rounding repairs (flat.hpp), the
+// Lemma 1 audit (audit.hpp) and the leftovers (leftovers.hpp).
 #include "refine/seq_refinement.hpp"
 
 #include <unistd.h>
@@ -13,79 +17,63 @@
 #include "geom/construct.hpp"
 #include "geom/point_text.hpp"
 #include "refine/audit.hpp"
+#include "refine/budget.hpp"
 #include "refine/closure.hpp"
 #include "refine/flat.hpp"
 #include "refine/guard.hpp"
+#include "refine/leftovers.hpp"
 #include "refine/quality.hpp"
 #include "refine/split.hpp"
+#include "refine/work_queue.hpp"
 #include "surface/insert.hpp"
 #include "surface/split.hpp"
 
 namespace pdr::refine {
 namespace {
 
-struct Entry {
-  TetId t;
-  std::array<VertexId, 4> v;
-};
-
 class Refiner {
  public:
-  Refiner(VolumeMesh& m, const RefineOptions& o) : m_(m), o_(o) {}
+  Refiner(VolumeMesh& m, const RefineOptions& o)
+      : m_(m), o_(o), budget_(m.dt.points(), o) {}
 
+  // Fig. 2: while some tet is bad, Refine(t). Outside the theory the encroached elements
+  // the guards found come first (subsegments, then subfacets); the budget ends the loop.
   RefineResult run() {
-    res_.stats.vertex_cap = o_.max_vertices != 0 ? o_.max_vertices : derived_cap();
+    res_.stats.vertex_cap = budget_.cap();
     res_.stats.h = std::numeric_limits<double>::infinity();
     const TetStore& s = m_.dt.store();
     if (!o_.admissible) start_guards();
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
     for (;;) {
-      if (!enc_.subsegments.empty()) {
-        const Encroached e = enc_.subsegments.back();
-        enc_.subsegments.pop_back();
-        if (!still_subsegment(m_.surf, e)) continue;
-        if (at_cap()) break;
-        ++res_.stats.encroached_splits;
-        if (auto why = split(e.id, hint(e.tet))) unsplit(std::move(*why));
+      if (const auto done = refine_encroached()) {
+        if (!*done) break;  // the budget is spent
         continue;
       }
-      if (!enc_.subfacets.empty()) {
-        const Encroached e = enc_.subfacets.back();
-        enc_.subfacets.pop_back();
-        if (!still_subfacet(m_.surf, e)) continue;
-        if (at_cap()) break;
-        ++res_.stats.encroached_splits;
-        refine_subfacet(e.id, hint(e.tet), kNoTet);
-        continue;
-      }
-      if (head_ >= queue_.size()) break;
-      const Entry e = queue_[head_++];
-      if (head_ > 4096 && head_ * 2 > queue_.size()) {
-        queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head_));
-        head_ = 0;
-      }
-      if (!same(e)) continue;
+      QueuedTet e;
+      if (!queue_.pop(e)) break;  // no bad tet left
+      if (!WorkQueue::current(s, e)) continue;
       if (at_cap()) break;
       const std::size_t before = m_.dt.num_points();
       refine_tet(e.t);
       // An encroached element split on t's behalf may leave t alive: it waits again.
-      if (m_.dt.num_points() > before && same(e)) queue_.push_back(e);
+      if (m_.dt.num_points() > before && WorkQueue::current(s, e)) queue_.push(e);
       if (o_.progress && (++steps_ & 0x3FFF) == 0)
         std::fprintf(stderr, "\rrefine: %zu vertices, %zu queued   ", m_.dt.num_points(),
-                     queue_.size() - head_);
+                     queue_.pending());
     }
     if (o_.progress) std::fprintf(stderr, "\n");
-    collect_leftovers();
+    refused_.seal();
+    res_.leftovers = collect_leftovers(m_, o_.ratio, refused_, res_.stop_reason);
     return std::move(res_);
   }
 
  private:
   VolumeMesh& m_;
   const RefineOptions o_;
+  const VertexBudget budget_;
   RefineResult res_;
-  std::vector<Entry> queue_;
-  std::size_t head_ = 0;
+  WorkQueue queue_;
   std::uint64_t steps_ = 0;
   Cavity cav_, cav2_;
   std::vector<TetId> star_;
@@ -93,43 +81,37 @@ class Refiner {
   // a star of one of them.
   std::vector<std::pair<VertexId, const char*>> step_;
   std::vector<TetId> around_;
-  std::vector<std::pair<std::array<VertexId, 4>, std::string>> refused_;
+  RefusedTets refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
 
   const Point& pt(VertexId v) const { return m_.dt.point(v); }
 
-  double box_volume() const {
-    const auto& pts = m_.dt.points();
-    Point lo = pts[0], hi = pts[0];
-    for (const Point& p : pts)
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    return (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-  }
-  // The resolution u asked for: the smallest of d/2, L/2 and cbrt(V) given.
-  double resolution() const {
-    double u = o_.d > 0 && std::isfinite(o_.d) ? o_.d / 2 : std::cbrt(box_volume()) / 8;
-    if (o_.size) u = std::min(u, *o_.size / 2);
-    if (o_.max_volume) u = std::min(u, std::cbrt(*o_.max_volume));
-    return u;
-  }
-  std::size_t derived_cap() const {
-    // A resource limit, not a geometric decision: 1000 + 64 n + 16 (box volume) / u^3.
-    const double u = resolution();
-    const double cap = 1000.0 + 64.0 * static_cast<double>(m_.dt.num_points()) +
-                       16.0 * box_volume() / (u * u * u);
-    return static_cast<std::size_t>(std::min(cap, 2.0e9));
-  }
-  bool at_cap() {
-    if (m_.dt.num_points() < res_.stats.vertex_cap) return false;
-    res_.stop_reason = "refine.cap: " + std::to_string(m_.dt.num_points()) +
-                       " vertices reached the cap of " + std::to_string(res_.stats.vertex_cap) +
-                       (o_.max_vertices != 0
-                            ? std::string(" (--max-vertices)")
-                            : std::string(" (derived from the input size, its bounding box, d, "
-                                          "B and the size bounds); the domain is probably "
-                                          "outside the theory"));
-    return true;
+  bool at_cap() { return budget_.reached(m_.dt.num_points(), res_.stop_reason); }
+
+  // Outside the theory: refines the next encroached element the guards found (subsegments
+  // first, then subfacets: Fig. 2's order). nullopt when none is waiting; false when the
+  // budget is spent.
+  std::optional<bool> refine_encroached() {
+    while (!enc_.subsegments.empty()) {
+      const Encroached e = enc_.subsegments.back();
+      enc_.subsegments.pop_back();
+      if (!still_subsegment(m_.surf, e)) continue;
+      if (at_cap()) return false;
+      ++res_.stats.encroached_splits;
+      if (auto why = split(e.id, hint(e.tet))) unsplit(std::move(*why));
+      return true;
+    }
+    while (!enc_.subfacets.empty()) {
+      const Encroached e = enc_.subfacets.back();
+      enc_.subfacets.pop_back();
+      if (!still_subfacet(m_.surf, e)) continue;
+      if (at_cap()) return false;
+      ++res_.stats.encroached_splits;
+      refine_subfacet(e.id, hint(e.tet), kNoTet);
+      return true;
+    }
+    return std::nullopt;
   }
 
   // Inadmissible domains: shells and protected lengths at the acute vertices (every input
@@ -139,7 +121,7 @@ class Refiner {
     if (acute.empty())
       for (std::uint32_t v = 0; v < m_.surf.vertex_count(); ++v)
         if (m_.surf.home(v).kind == HomeKind::Input) acute.push_back(v);
-    guard_ = SplitGuard(m_.surf, acute, resolution() / 64);
+    guard_ = SplitGuard(m_.surf, acute, budget_.resolution() / 64);
     const TetStore& s = m_.dt.store();
     std::vector<TetId> all;
     for (TetId t = 0; t < s.slots(); ++t)
@@ -159,10 +141,6 @@ class Refiner {
     const VertexId* v = m_.dt.store().vertices(t);
     return {v[0], v[1], v[2], v[3]};
   }
-  bool same(const Entry& e) const {
-    const TetStore& s = m_.dt.store();
-    return e.t < s.slots() && s.is_alive(e.t) && verts(e.t) == e.v;
-  }
 
   bool bad(TetId t) const {
     const VertexId* v = m_.dt.store().vertices(t);
@@ -170,7 +148,7 @@ class Refiner {
            subfacet_to_refine(m_, t).has_value();  // issue #3: refine/flat.hpp
   }
   void consider(TetId t) {
-    if (bad(t)) queue_.push_back({t, verts(t)});
+    if (bad(t)) queue_.push(m_.dt.store(), t);
   }
   void queue_star() {
     const TetStore& s = m_.dt.store();
@@ -180,7 +158,7 @@ class Refiner {
 
   void refuse(TetId t, std::string why) {
     ++res_.stats.refused;
-    refused_.push_back({verts(t), std::move(why)});
+    refused_.add(verts(t), std::move(why));
   }
 
   // Locates p from `hint` and builds its cavity into `c`; false when p is a vertex.
@@ -391,28 +369,6 @@ class Refiner {
     const VertexId nv = commit_point(m_, cav_, kNone, star_);
     ++res_.stats.tet_circumcenters;
     after_insert(nv, "tet", r2);
-  }
-
-  void collect_leftovers() {
-    const TetStore& s = m_.dt.store();
-    std::sort(refused_.begin(), refused_.end());
-    for (TetId t = 0; t < s.slots(); ++t) {
-      if (!s.is_alive(t) || s.is_ghost(t) || !m_.is_inside(t)) continue;
-      const VertexId* v = s.vertices(t);
-      if (!ratio_at_least(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), o_.ratio)) continue;
-      Leftover l;
-      l.tet = t;
-      l.v = verts(t);
-      for (int k = 0; k < 4; ++k) l.p[k] = pt(v[k]);
-      l.ratio = ratio_of(l.p[0], l.p[1], l.p[2], l.p[3]);
-      auto it = std::lower_bound(refused_.begin(), refused_.end(),
-                                 std::pair<std::array<VertexId, 4>, std::string>{l.v, ""});
-      l.reason = it != refused_.end() && it->first == l.v
-                     ? it->second
-                     : (res_.stop_reason.empty() ? "refine.unrefined: never refined"
-                                                 : res_.stop_reason);
-      res_.leftovers.push_back(std::move(l));
-    }
   }
 };
 

@@ -1,9 +1,12 @@
-// SeqRefinement (paper §3, Fig. 2) over the tets of T inside Ω.
+// SeqRefinement (paper §3, Fig. 2) over the tets of T inside Ω. The parts, one file each:
+// seq_refinement.cpp (the loop, Refine(t), Refine(f), Refine(s)), work_queue.hpp (the bad
+// tets), budget.hpp (resolution and vertex cap), closure.hpp (Fig. 2's encroachment tests
+// on the closure), guard.hpp and split.hpp (the guards outside the theory), flat.hpp (the
+// rounding repairs on tilted facets), audit.hpp (Lemma 1), leftovers.hpp (what is left).
 //
 // A tet is bad when ratio >= B (refine/quality.hpp, exact), or, with size control, its
-// circumradius exceeds L or its volume exceeds V. Bad tets wait in a FIFO work queue as
-// (tet id, its four vertices): an entry is skipped when the slot is dead or holds other
-// vertices (ids are reused). Refine(t):
+// circumradius exceeds L or its volume exceeds V. Bad tets wait in a FIFO work queue
+// (work_queue.hpp). Refine(t):
 //   p = circumcenter(t) (double: where only); the tet containing p is located from t and
 //   the cavity of p built read-only from it;
 //   1. p in the CLOSED diametral ball of a subsegment that is an edge of a closure tet:

@@ -1,0 +1,48 @@
+// The resolution and the vertex cap of SeqRefinement; see budget.hpp.
+#include "refine/budget.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "refine/seq_refinement.hpp"
+
+namespace pdr::refine {
+
+namespace {
+
+double box_volume(std::span<const Point> pts) {
+  Point lo = pts[0], hi = pts[0];
+  for (const Point& p : pts)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  return (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+}
+
+}  // namespace
+
+VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o) {
+  const double box = box_volume(points);
+  double u = o.d > 0 && std::isfinite(o.d) ? o.d / 2 : std::cbrt(box) / 8;
+  if (o.size) u = std::min(u, *o.size / 2);
+  if (o.max_volume) u = std::min(u, std::cbrt(*o.max_volume));
+  resolution_ = u;
+  user_cap_ = o.max_vertices != 0;
+  if (user_cap_) {
+    cap_ = o.max_vertices;
+  } else {
+    const double cap = 1000.0 + 64.0 * static_cast<double>(points.size()) + 16.0 * box / (u * u * u);
+    cap_ = static_cast<std::size_t>(std::min(cap, 2.0e9));
+  }
+}
+
+bool VertexBudget::reached(std::size_t vertices, std::string& why) const {
+  if (vertices < cap_) return false;
+  why = "refine.cap: " + std::to_string(vertices) + " vertices reached the cap of " +
+        std::to_string(cap_) +
+        (user_cap_ ? std::string(" (--max-vertices)")
+                   : std::string(" (derived from the input size, its bounding box, d, "
+                                 "B and the size bounds); the domain is probably "
+                                 "outside the theory"));
+  return true;
+}
+
+}  // namespace pdr::refine

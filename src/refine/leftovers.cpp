@@ -1,0 +1,41 @@
+// The refused tets and the leftovers of SeqRefinement; see leftovers.hpp.
+#include "refine/leftovers.hpp"
+
+#include <algorithm>
+
+#include "refine/quality.hpp"
+
+namespace pdr::refine {
+
+const std::string* RefusedTets::reason(const std::array<VertexId, 4>& v) const {
+  auto it = std::lower_bound(items_.begin(), items_.end(),
+                             std::pair<std::array<VertexId, 4>, std::string>{v, ""});
+  return it != items_.end() && it->first == v ? &it->second : nullptr;
+}
+
+std::vector<Leftover> collect_leftovers(const VolumeMesh& m, double ratio,
+                                        const RefusedTets& refused,
+                                        const std::string& stop_reason) {
+  std::vector<Leftover> out;
+  const TetStore& s = m.dt.store();
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
+    const VertexId* v = s.vertices(t);
+    const Point &a = m.dt.point(v[0]), &b = m.dt.point(v[1]), &c = m.dt.point(v[2]),
+                &d = m.dt.point(v[3]);
+    if (!ratio_at_least(a, b, c, d, ratio)) continue;
+    Leftover l;
+    l.tet = t;
+    l.v = {v[0], v[1], v[2], v[3]};
+    l.p = {a, b, c, d};
+    l.ratio = ratio_of(a, b, c, d);
+    if (const std::string* why = refused.reason(l.v))
+      l.reason = *why;
+    else
+      l.reason = stop_reason.empty() ? "refine.unrefined: never refined" : stop_reason;
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
+}  // namespace pdr::refine
