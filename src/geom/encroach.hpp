@@ -15,11 +15,9 @@
 //                X = |u|^2 (v x n) + |v|^2 (n x u) (construct.hpp, exact here), and a lies
 //                on the sphere, so |p - o|^2 < r^2  iff  |w|^2 - w.X / N < 0; the sign
 //                returned is that of w.X - N |w|^2 (degree 6; N > 0).
-// Evaluation: a floating-point filter with a forward error bound (Higham's bound for a
-// straight-line program of depth k: |error| <= gamma_k * the same program on absolute
-// values; depth 3 and 11 here, bounds 8u and 16u with margin), used only when every
-// coordinate difference is 0 or in [2^-150, 2^150] (then no product of at most six of them
-// underflows or overflows); otherwise, or when the filter is unsure, GMP rationals decide.
+// Evaluation: the floating-point filters of geom/filter_kit.hpp (their error bounds are
+// derived there: 6u and 20u), used only when every coordinate difference is 0 or in
+// [2^-150, 2^150]; otherwise, or when the filter is unsure, GMP rationals decide.
 // No range limit on the exact path. Laws (tests/geom/encroach_test.cpp): the result equals
 // the GMP reference; swapping a and b (or permuting a, b, c) does not change it; vertices of
 // the element are on the sphere; the exact circumcenter is inside and equidistant.

@@ -4,28 +4,13 @@
 #include <gmpxx.h>
 
 #include <array>
-#include <cmath>
-#include <optional>
 
 #include "geom/encroach.hpp"
+#include "geom/filter_kit.hpp"
 
 namespace pdr::surface {
 
 namespace {
-
-constexpr double kUnit = 0x1p-53;
-
-bool in_range(double x) {
-  const double m = std::fabs(x);
-  return m == 0 || (m >= 0x1p-150 && m <= 0x1p150);
-}
-
-// Decides value >= 0 from a filtered value and its error bound; nullopt when unsure.
-std::optional<bool> at_least_zero(double value, double bound) {
-  if (value > bound) return true;
-  if (value < -bound) return false;
-  return std::nullopt;
-}
 
 mpq_class q_diff(double x, double y) { return mpq_class(x) - mpq_class(y); }
 
@@ -43,18 +28,8 @@ bool subfacet_encroached_by(const SurfaceMesh& m, std::uint32_t t, const Point& 
 }
 
 bool length2_at_least(const Point& a, const Point& b, double d, double k) {
-  bool ok = in_range(d);
-  double lhs = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double e = b[i] - a[i];
-    ok = ok && in_range(e);
-    lhs += e * e;
-  }
-  if (ok) {
-    // lhs: depth 4, all terms nonnegative; rhs: depth 2.
-    const double rhs = k * d * d;
-    if (const auto r = at_least_zero(lhs - rhs, 8 * kUnit * (lhs + rhs))) return *r;
-  }
+  const Filtered f = filter::length2_minus(a, b, d, k);
+  if (f != Filtered::Unsure) return f == Filtered::Positive;
   mpq_class l = 0;
   for (int i = 0; i < 3; ++i) {
     const mpq_class e = q_diff(b[i], a[i]);
@@ -64,27 +39,8 @@ bool length2_at_least(const Point& a, const Point& b, double d, double k) {
 }
 
 bool circumradius2_at_least(const Point& a, const Point& b, const Point& c, double d, double k) {
-  Point u, v, w;
-  bool ok = in_range(d);
-  for (int i = 0; i < 3; ++i) {
-    u[i] = b[i] - a[i];
-    v[i] = c[i] - a[i];
-    w[i] = b[i] - c[i];
-    ok = ok && in_range(u[i]) && in_range(v[i]) && in_range(w[i]);
-  }
-  if (ok) {
-    auto dot = [](const Point& p, const Point& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; };
-    const Point n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    const Point na{std::fabs(u[1] * v[2]) + std::fabs(u[2] * v[1]),
-                   std::fabs(u[2] * v[0]) + std::fabs(u[0] * v[2]),
-                   std::fabs(u[0] * v[1]) + std::fabs(u[1] * v[0])};
-    const double lhs = dot(u, u) * dot(v, v) * dot(w, w);
-    const double scale = 4 * k * d * d;
-    // Depth at most 9 on either side; the absolute program replaces n by na.
-    const double value = lhs - scale * dot(n, n);
-    const double bar = lhs + scale * dot(na, na);
-    if (const auto r = at_least_zero(value, 16 * kUnit * bar)) return *r;
-  }
+  const Filtered f = filter::circumradius2_minus(a, b, c, d, k);
+  if (f != Filtered::Unsure) return f == Filtered::Positive;
   std::array<mpq_class, 3> qu, qv, qw;
   for (int i = 0; i < 3; ++i) {
     qu[i] = q_diff(b[i], a[i]);

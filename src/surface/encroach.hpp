@@ -9,9 +9,9 @@
 //                             (u = b - a, v = c - a; r = d√2 for §2.1 step 2).
 // The bounds L and r are given as a double d and an exact factor: L^2 = k d^2 with k = 4
 // ("2d"), r^2 = k d^2 with k = 2 ("d√2"), so no square root is rounded. Each test is a
-// floating-point filter with a forward error bound (Higham's gamma_k on the program of
-// absolute values, as in encroach.hpp) and GMP rationals when unsure or out of the filter's
-// range (every difference and d 0 or in [2^-150, 2^150]).
+// floating-point filter of geom/filter_kit.hpp (bounds derived there: 7u and 19u) and GMP
+// rationals when unsure or out of the filter's range (every difference and d 0 or in
+// [2^-150, 2^150]).
 #pragma once
 
 #include <cstdint>
