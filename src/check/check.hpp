@@ -3,6 +3,11 @@
 // Given a mesh as plain arrays (points, tets, optionally boundary faces) and optionally the
 // input domain (a Plc), check_mesh() decides, exactly, the invariants that the paper
 // (Nave, Chrisochoides, Chew 2002) guarantees of its output, and returns them as data.
+// Independent of the mesher on purpose: its filters, exact stages and measures
+// (check/signs.hpp, check/circumball.hpp, ...) are its own copies, not the kernel's
+// geom/predicates.hpp or geom/filter_kit.hpp, so that a fault in one is not repeated in the
+// other; it shares only the GMP reference (geom/exact.hpp) and, for displayed measures,
+// the floating-point constructions (geom/construct.hpp).
 // One CheckResult per check, always all of them, in this order:
 //
 //   validity.indices          every vertex index < #points
