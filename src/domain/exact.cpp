@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geom/filter_kit.hpp"
 #include "geom/predicates.hpp"
 #include "geom/stage2.hpp"
 
@@ -49,22 +50,8 @@ mpq_class qdiff(double x, double y) { return mpq_class(x) - mpq_class(y); }
 }  // namespace
 
 Sign dot_sign(const Point& o, const Point& a, const Point& b) {
-  // Filter: each of the three terms reaches the sum through at most 5 roundings (two
-  // differences, the product, two additions), so the error is below 6u * sum |term|
-  // (Higham's gamma_5 < 6u); 1e-15 > 9u leaves a margin. Tiny magnitudes could underflow:
-  // those take the exact path.
-  double sum = 0, perm = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double t = (a[k] - o[k]) * (b[k] - o[k]);
-    sum += t;
-    perm += std::fabs(t);
-  }
-  if (perm == 0) return Sign::Zero;
-  if (perm > 1e-250 && std::isfinite(perm)) {
-    const double bound = 1e-15 * perm;
-    if (sum > bound) return Sign::Positive;
-    if (sum < -bound) return Sign::Negative;
-  }
+  const Filtered f = filter::dot3(o, a, b);  // geom/filter_kit.hpp: K = 5
+  if (f != Filtered::Unsure) return static_cast<Sign>(f);
   mpq_class s = 0;
   for (int k = 0; k < 3; ++k) s += qdiff(a[k], o[k]) * qdiff(b[k], o[k]);
   return sign_of(sgn(s));
@@ -112,40 +99,18 @@ RatPoint make_rat(const QPoint& q) {
 
 RatPoint make_rat(const Point& p) { return {to_q(p), p, 0}; }
 
-// Filters. For a determinant D that is linear in o, D(o) = D(d) + g.(o - d) with g its
-// gradient in o, so |D(o) - D_fl(d)| <= |D(d) - D_fl(d)| + |g|_1 err. The rounding part is
-// below 16u times the permanent (a few roundings per term, Higham's gamma_k, k <= 10),
-// taken as 1e-14 * permanent; |g|_1 is computed from rounded differences, so it is
-// enlarged by 1%. Tiny or huge magnitudes (possible underflow, overflow) go exact.
+// Filters: geom/filter_kit.hpp's orient3d_near and orient2d_near (a determinant linear in
+// o, evaluated at o's double approximation, with o's error carried by the gradient).
 Sign orient3d_rat(const Point& a, const Point& b, const Point& c, const RatPoint& o) {
-  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const double wx = o.d[0] - a[0], wy = o.d[1] - a[1], wz = o.d[2] - a[2];
-  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-  const double det = nx * wx + ny * wy + nz * wz;
-  const double perm = (std::fabs(uy * vz) + std::fabs(uz * vy)) * std::fabs(wx) +
-                      (std::fabs(uz * vx) + std::fabs(ux * vz)) * std::fabs(wy) +
-                      (std::fabs(ux * vy) + std::fabs(uy * vx)) * std::fabs(wz);
-  const double grad = std::fabs(nx) + std::fabs(ny) + std::fabs(nz);
-  const double bound = 1e-14 * perm + 1.01 * grad * o.err;
-  if (std::isfinite(bound) && perm > 1e-250) {
-    if (det > bound) return Sign::Positive;
-    if (det < -bound) return Sign::Negative;
-  }
+  const Filtered f = filter::orient3d_near(a, b, c, o.d, o.err);
+  if (f != Filtered::Unsure) return static_cast<Sign>(f);
   return orient3d_q(to_q(a), to_q(b), to_q(c), o.q);
 }
 
 Sign orient2d_rat(int drop, const Point& a, const Point& b, const RatPoint& o) {
   const int i = (drop + 1) % 3, j = (drop + 2) % 3;
-  const double ux = b[i] - a[i], uy = b[j] - a[j];
-  const double wx = o.d[i] - a[i], wy = o.d[j] - a[j];
-  const double det = ux * wy - uy * wx;
-  const double perm = std::fabs(ux * wy) + std::fabs(uy * wx);
-  const double bound = 1e-14 * perm + 1.01 * (std::fabs(ux) + std::fabs(uy)) * o.err;
-  if (std::isfinite(bound) && perm > 1e-250) {
-    if (det > bound) return Sign::Positive;
-    if (det < -bound) return Sign::Negative;
-  }
+  const Filtered f = filter::orient2d_near(i, j, a, b, o.d, o.err);
+  if (f != Filtered::Unsure) return static_cast<Sign>(f);
   const mpq_class qux = qdiff(b[i], a[i]), quy = qdiff(b[j], a[j]);
   const mpq_class qwx = o.q[i] - mpq_class(a[i]), qwy = o.q[j] - mpq_class(a[j]);
   return sign_of(sgn(mpq_class(qux * qwy - quy * qwx)));

@@ -127,4 +127,56 @@ inline Filtered circumradius2_minus(const Point& a, const Point& b, const Point&
   return sign_beyond(value, 19 * unit_roundoff * bar);
 }
 
+// (p - o).(q - o) (paper §1.1 angles between related components: the sign of a cosine).
+// Counts: differences 1, products 3, the running sum from 0 (0 + x is exact) 5: K = 5,
+// coefficient 6u. In range a nonzero product is at least 2^-300, so a zero absolute sum
+// means every product is exactly zero: Zero is then certain.
+inline Filtered dot3(const Point& o, const Point& p, const Point& q) {
+  const Point e = sub(p, o), f = sub(q, o);
+  if (!entry_in_range(e) || !entry_in_range(f)) return Filtered::Unsure;
+  const double abs = dot_abs(e, f);
+  if (abs == 0) return Filtered::Zero;
+  return sign_beyond(dot(e, f), 6 * unit_roundoff * abs);
+}
+
+// orient3d(a, b, c, o) for a point o known as a double approximation `od` with
+// |o_k - od_k| <= err per coordinate (a rational point rounded, domain/exact.hpp). The
+// determinant n.(o - a), n = (b - a) x (c - a), is linear in o, so
+//   |D(o) - D_fl(od)| <= |D(od) - D_fl(od)| + |n_exact|_1 err.
+// Rounding: differences 1, n 4, n_k w_k 6, two sums: K = 8, coefficient 9u on the absolute
+// program. |n_exact|_1 <= |n_fl|_1 + gamma_4 |n|_abs (n's own rounding, which matters when
+// n cancels), bounded by (|n_fl|_1 + 5u |n|_abs); the factor 1 + 2^-6 covers the few
+// roundings of computing that term and the bound itself.
+inline Filtered orient3d_near(const Point& a, const Point& b, const Point& c, const Point& od,
+                              double err) {
+  const Point u = sub(b, a), v = sub(c, a), w = sub(od, a);
+  if (!entry_in_range(u) || !entry_in_range(v) || !entry_in_range(w) || !entry_in_range(err))
+    return Filtered::Unsure;
+  const Point n = cross(u, v), na = cross_abs(u, v);
+  const double det = dot(n, w);
+  const double perm = (na[0] * std::fabs(w[0]) + na[1] * std::fabs(w[1])) +
+                      na[2] * std::fabs(w[2]);
+  const double grad = (std::fabs(n[0]) + std::fabs(n[1])) + std::fabs(n[2]) +
+                      5 * unit_roundoff * ((na[0] + na[1]) + na[2]);
+  return sign_beyond(det, 9 * unit_roundoff * perm + (1 + 0x1p-6) * grad * err);
+}
+
+// orient2d of the projections keeping coordinates i, j of a, b and a point o known as `od`
+// within err per coordinate (as above): D = ux wy - uy wx with u = b - a, w = o - a, linear
+// in o with gradient (-uy, ux). Rounding: differences 1, products 3, difference 4: K = 4,
+// coefficient 5u. |u_exact|_1 <= (1 + u) |u_fl|_1; the factor 1 + 2^-6 covers it and the
+// bound's own roundings.
+inline Filtered orient2d_near(int i, int j, const Point& a, const Point& b, const Point& od,
+                              double err) {
+  const double ux = b[i] - a[i], uy = b[j] - a[j];
+  const double wx = od[i] - a[i], wy = od[j] - a[j];
+  if (!entry_in_range(ux) || !entry_in_range(uy) || !entry_in_range(wx) ||
+      !entry_in_range(wy) || !entry_in_range(err))
+    return Filtered::Unsure;
+  const double l = ux * wy, r = uy * wx;
+  const double perm = std::fabs(l) + std::fabs(r);
+  return sign_beyond(l - r, 5 * unit_roundoff * perm +
+                                (1 + 0x1p-6) * (std::fabs(ux) + std::fabs(uy)) * err);
+}
+
 }  // namespace pdr::filter

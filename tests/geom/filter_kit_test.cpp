@@ -8,6 +8,8 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -134,6 +136,102 @@ TEST(FilterKit, CircumradiusAtItsThreshold) {
     const mpq_class exact = r2 - mpq_class(k) * mpq_class(d) * mpq_class(d);
     if (f != Filtered::Unsure) {
       ASSERT_EQ(static_cast<Sign>(f), q_sign(exact)) << i;
+    }
+  }
+  t.expect_both();
+}
+
+using QVec = std::array<mpq_class, 3>;
+QVec q_of(const Point& p) { return {mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; }
+
+TEST(FilterKit, Dot3AtRightAngles) {
+  Gen g(5);
+  Tally t;
+  for (int i = 0; i < kCases; ++i) {
+    const Point o = g.point(), p = g.point();
+    // q - o orthogonal to p - o up to rounding, then nudged along p - o by a jitter.
+    const Point e = sub(p, o), r = g.direction();
+    const Point perp = cross(e, r);
+    const double s = (g.jitter() - 1) * std::sqrt(dot(perp, perp) / dot(e, e));
+    const Point q{o[0] + perp[0] + s * e[0], o[1] + perp[1] + s * e[1],
+                  o[2] + perp[2] + s * e[2]};
+    const Filtered f = dot3(o, p, q);
+    t.add(f);
+    mpq_class exact = 0;
+    for (int k = 0; k < 3; ++k)
+      exact += (mpq_class(p[k]) - mpq_class(o[k])) * (mpq_class(q[k]) - mpq_class(o[k]));
+    if (f != Filtered::Unsure) {
+      ASSERT_EQ(static_cast<Sign>(f), q_sign(exact)) << i;
+    }
+  }
+  t.expect_both();
+}
+
+// A rational point on (or a jitter off) the plane of a, b, c, known as its rounding with
+// the error bound domain/exact.hpp's make_rat uses. Cases, by i % 3: 0 that point; 1 its
+// rounding taken as exact (err = 0: the rounding part of the bound alone); 2 the rounding
+// moved by up to err per coordinate (the error part of the bound alone).
+struct NearPoint {
+  QVec q;
+  Point d;
+  double err;
+};
+NearPoint near_plane(Gen& g, const Point& a, const Point& b, const Point& c, int i) {
+  const mpq_class s(g.coord()), t(g.coord());
+  const QVec qa = q_of(a), qb = q_of(b), qc = q_of(c);
+  const Point off = g.direction();
+  const double h = (g.jitter() - 1) * 16;
+  NearPoint n;
+  double m = 0;
+  for (int k = 0; k < 3; ++k) {
+    n.q[k] = qa[k] + s * (qb[k] - qa[k]) + t * (qc[k] - qa[k]) + mpq_class(h * off[k]);
+    n.d[k] = n.q[k].get_d();
+    m = std::max(m, std::fabs(n.d[k]));
+  }
+  n.err = 0x1p-51 * m + 0x1p-1000;
+  if (i % 3 == 0) return n;
+  for (int k = 0; k < 3; ++k) n.q[k] = mpq_class(n.d[k]);
+  if (i % 3 == 1) {
+    n.err = 0;
+    return n;
+  }
+  const Point delta = g.direction();  // components in [-1, 1]
+  for (int k = 0; k < 3; ++k) n.q[k] += mpq_class(n.err * delta[k]);
+  return n;
+}
+
+TEST(FilterKit, Orient3dNearAtItsPlane) {
+  Gen g(6);
+  Tally t;
+  for (int i = 0; i < kCases; ++i) {
+    const Point a = g.point(), b = g.point(), c = g.point();
+    const NearPoint o = near_plane(g, a, b, c, i);
+    const Filtered f = orient3d_near(a, b, c, o.d, o.err);
+    t.add(f);
+    const QVec qa = q_of(a), qb = q_of(b), qc = q_of(c);
+    QVec u, v, w;
+    for (int k = 0; k < 3; ++k) u[k] = qb[k] - qa[k], v[k] = qc[k] - qa[k], w[k] = o.q[k] - qa[k];
+    const mpq_class exact = (u[1] * v[2] - u[2] * v[1]) * w[0] + (u[2] * v[0] - u[0] * v[2]) * w[1] +
+                            (u[0] * v[1] - u[1] * v[0]) * w[2];
+    if (f != Filtered::Unsure) {
+      ASSERT_EQ(static_cast<Sign>(f), q_sign(exact)) << i;
+    }
+  }
+  t.expect_both();
+}
+
+TEST(FilterKit, Orient2dNearAtItsLine) {
+  Gen g(7);
+  Tally t;
+  for (int i = 0; i < kCases; ++i) {
+    const Point a = g.point(), b = g.point();
+    const NearPoint o = near_plane(g, a, b, b, i);  // on the line ab, or a jitter off it
+    const Filtered f = orient2d_near(0, 1, a, b, o.d, o.err);
+    t.add(f);
+    const mpq_class ux = mpq_class(b[0]) - mpq_class(a[0]), uy = mpq_class(b[1]) - mpq_class(a[1]);
+    const mpq_class wx = o.q[0] - mpq_class(a[0]), wy = o.q[1] - mpq_class(a[1]);
+    if (f != Filtered::Unsure) {
+      ASSERT_EQ(static_cast<Sign>(f), q_sign(mpq_class(ux * wy - uy * wx))) << i;
     }
   }
   t.expect_both();
