@@ -54,10 +54,11 @@ TetMeasures tet_measures(const Point& a, const Point& b, const Point& c, const P
     double l2 = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) l2 = std::min(l2, squared_length(*p[i], *p[j]));
+    const double r2 = construct::circumradius2(a, b, c, d);
     m.circumcenter = construct::circumcenter(a, b, c, d);
-    m.circumradius = std::sqrt(construct::circumradius2(a, b, c, d));
+    m.circumradius = std::sqrt(r2);
     m.shortest_edge = std::sqrt(l2);
-    m.ratio = std::sqrt(construct::circumradius2(a, b, c, d) / l2);
+    m.ratio = std::sqrt(r2 / l2);
     return m;
   }
   mpq_class l2;

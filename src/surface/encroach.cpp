@@ -3,18 +3,11 @@
 
 #include <gmpxx.h>
 
-#include <array>
-
 #include "geom/encroach.hpp"
+#include "geom/exact.hpp"
 #include "geom/filter_kit.hpp"
 
 namespace pdr::surface {
-
-namespace {
-
-mpq_class q_diff(double x, double y) { return mpq_class(x) - mpq_class(y); }
-
-}  // namespace
 
 bool subsegment_encroached_by(const SurfaceMesh& m, std::uint32_t s, const Point& p) {
   const Subsegment& g = m.subsegment(s);
@@ -30,30 +23,13 @@ bool subfacet_encroached_by(const SurfaceMesh& m, std::uint32_t t, const Point& 
 bool length2_at_least(const Point& a, const Point& b, double d, double k) {
   const Filtered f = filter::length2_minus(a, b, d, k);
   if (f != Filtered::Unsure) return f == Filtered::Positive;
-  mpq_class l = 0;
-  for (int i = 0; i < 3; ++i) {
-    const mpq_class e = q_diff(b[i], a[i]);
-    l += e * e;
-  }
-  return l >= mpq_class(k) * mpq_class(d) * mpq_class(d);
+  return exact::squared_distance(a, b) >= mpq_class(k) * mpq_class(d) * mpq_class(d);
 }
 
 bool circumradius2_at_least(const Point& a, const Point& b, const Point& c, double d, double k) {
   const Filtered f = filter::circumradius2_minus(a, b, c, d, k);
   if (f != Filtered::Unsure) return f == Filtered::Positive;
-  std::array<mpq_class, 3> qu, qv, qw;
-  for (int i = 0; i < 3; ++i) {
-    qu[i] = q_diff(b[i], a[i]);
-    qv[i] = q_diff(c[i], a[i]);
-    qw[i] = q_diff(b[i], c[i]);
-  }
-  auto qdot = [](const std::array<mpq_class, 3>& p, const std::array<mpq_class, 3>& q) {
-    return mpq_class(p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
-  };
-  const std::array<mpq_class, 3> n{qu[1] * qv[2] - qu[2] * qv[1], qu[2] * qv[0] - qu[0] * qv[2],
-                                   qu[0] * qv[1] - qu[1] * qv[0]};
-  const mpq_class lhs = qdot(qu, qu) * qdot(qv, qv) * qdot(qw, qw);
-  return lhs >= 4 * mpq_class(k) * mpq_class(d) * mpq_class(d) * qdot(n, n);
+  return exact::triangle_circumradius2(a, b, c) >= mpq_class(k) * mpq_class(d) * mpq_class(d);
 }
 
 bool subsegment_too_long(const SurfaceMesh& m, std::uint32_t s, double d) {
