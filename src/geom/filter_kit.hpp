@@ -23,7 +23,9 @@
 // a sphere or a threshold) and compares every answer with GMP.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "geom/filter.hpp"
 #include "geom/point.hpp"
@@ -177,6 +179,165 @@ inline Filtered orient2d_near(int i, int j, const Point& a, const Point& b, cons
   const double perm = std::fabs(l) + std::fabs(r);
   return sign_beyond(l - r, 5 * unit_roundoff * perm +
                                 (1 + 0x1p-6) * (std::fabs(ux) + std::fabs(uy)) * err);
+}
+
+// Brackets. Some measures are compared as products of squares (the tet tests below), whose
+// degree in the coordinate differences is too high for the one-program argument within the
+// range above. A Bracket carries a closed interval around a nonnegative real through
+// products and sums, each rounded operation widened on its own, underflow and overflow
+// included: for the computed result r of one rounded operation on nonnegative operands whose
+// exact result is t, either r >= 2^-1000, then no underflow occurred, r = t (1 + delta) with
+// |delta| <= u, and r (1 - 4u) <= t <= r (1 + 4u) even after rounding those products; or
+// r < 2^-1000, then 0 <= t < 2^-999. An overflowed bound is infinite (or NaN from inf * 0);
+// callers treat a non-finite bound as unsure.
+struct Bracket {
+  double lo, hi;
+};
+inline constexpr double kBracketTiny = 0x1p-1000;
+inline double round_down(double r) { return r < kBracketTiny ? 0 : r * (1 - 4 * unit_roundoff); }
+inline double round_up(double r) {
+  return r < kBracketTiny ? 2 * kBracketTiny : r * (1 + 4 * unit_roundoff);
+}
+// The exact nonnegative value x.
+inline Bracket exactly(double x) { return {x, x}; }
+// |t| for a real t known as x with |t - x| <= err (err >= 0).
+inline Bracket magnitude_within(double x, double err) {
+  const double a = std::fabs(x);
+  return {a > err ? round_down(a - err) : 0, round_up(a + err)};
+}
+inline Bracket operator*(Bracket p, Bracket q) {
+  return {round_down(p.lo * q.lo), round_up(p.hi * q.hi)};
+}
+inline Bracket operator+(Bracket p, Bracket q) {
+  return {round_down(p.lo + q.lo), round_up(p.hi + q.hi)};
+}
+// Positive when every value of p exceeds every value of q, Negative when every value of p
+// is below every value of q; Unsure when they overlap or a bound is not finite.
+inline Filtered compare(Bracket p, Bracket q) {
+  if (!std::isfinite(p.hi) || !std::isfinite(q.hi)) return Filtered::Unsure;
+  if (p.lo > q.hi) return Filtered::Positive;
+  if (p.hi < q.lo) return Filtered::Negative;
+  return Filtered::Unsure;
+}
+
+// The circumsphere of a tet (paper §1.1, radius-edge ratio): with u = b - a, v = c - a,
+// w = d - a, D = u.(v x w) and X = |u|^2 (v x w) + |v|^2 (w x u) + |w|^2 (u x v), the
+// circumcenter is a + X / (2D) and R^2 = |X|^2 / (4 D^2).
+// Counts: u, v, w 1; the crosses 4; |.|^2 5; the products 10; X_i's two sums: K = 12,
+// coefficient 13u. D: products 1 + 4 + 1 = 6, two sums: K = 8, coefficient 9u. Each
+// component then enters a Bracket (magnitude_within), squared and summed there. Range: the
+// differences as entry_in_range (X has degree 4, D degree 3). nullopt when out of range or
+// when D's sign is not certain (a flat or nearly flat tet: GMP decides).
+struct TetMeasures {
+  Bracket x2, d2;  // |X|^2 and D^2
+};
+inline std::optional<TetMeasures> tet_measures(const Point& a, const Point& b, const Point& c,
+                                               const Point& d) {
+  const Point u = sub(b, a), v = sub(c, a), w = sub(d, a);
+  if (!entry_in_range(u) || !entry_in_range(v) || !entry_in_range(w)) return std::nullopt;
+  const Point vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
+  const Point vwa = cross_abs(v, w), wua = cross_abs(w, u), uva = cross_abs(u, v);
+  const double lu = dot(u, u), lv = dot(v, v), lw = dot(w, w);
+  const double det = dot(u, vw), det_abs = dot_abs(u, vwa);
+  const Bracket dm = magnitude_within(det, 9 * unit_roundoff * det_abs);
+  if (dm.lo == 0) return std::nullopt;
+  TetMeasures m{{0, 0}, dm * dm};
+  for (int i = 0; i < 3; ++i) {
+    const double x = (lu * vw[i] + lv * wu[i]) + lw * uv[i];
+    const double xa = (lu * vwa[i] + lv * wua[i]) + lw * uva[i];
+    const Bracket xm = magnitude_within(x, 13 * unit_roundoff * xa);
+    m.x2 = m.x2 + xm * xm;
+  }
+  return m;
+}
+
+// The squared length of a tet's shortest edge. Each |e|^2: differences 1, squares 3, two
+// sums: K = 5, coefficient 6u (the absolute program is the value itself). The minimum of
+// the six lies between the minima of the lower and of the upper ends.
+inline std::optional<Bracket> shortest_edge2(const Point& a, const Point& b, const Point& c,
+                                            const Point& d) {
+  const Point* p[4] = {&a, &b, &c, &d};
+  Bracket best{INFINITY, INFINITY};
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const Point e = sub(*p[i], *p[j]);
+      if (!entry_in_range(e)) return std::nullopt;
+      const double l2 = dot(e, e);
+      const Bracket l = magnitude_within(l2, 6 * unit_roundoff * l2);
+      best = {std::min(best.lo, l.lo), std::min(best.hi, l.hi)};
+    }
+  return best;
+}
+
+// The tet tests of the refinement loop (paper §3, Fig. 2), for a tet with D != 0:
+//   R^2 - B^2 lmin^2:  |X|^2 against 4 B^2 lmin^2 D^2
+//   R^2 - L^2:         |X|^2 against 4 L^2 D^2
+//   6 vol - 6V:        D^2 against (6V)^2
+// B, L, V: any positive doubles (the Brackets absorb their rounding and range).
+inline Filtered ratio_minus(const TetMeasures& m, Bracket lmin2, double bound) {
+  const Bracket b{bound, bound};
+  return compare(m.x2, exactly(4) * b * b * lmin2 * m.d2);
+}
+inline Filtered radius_minus(const TetMeasures& m, double size) {
+  const Bracket l{size, size};
+  return compare(m.x2, exactly(4) * l * l * m.d2);
+}
+inline Filtered volume_minus(const TetMeasures& m, double max_volume) {
+  const Bracket v6 = exactly(6) * exactly(max_volume);
+  return compare(m.d2, v6 * v6);
+}
+
+// The facet chart (surface/chart.hpp): with e1 = t1 - t0, e2 = t2 - t0, a point q seen from
+// d has the chart coordinates x = e1.(q - d), y = e2.(q - d) and the lift difference
+// w = sum_k (q_k - d_k)((q_k - t0_k) + (d_k - t0_k)) = |q - t0|^2 - |d - t0|^2.
+// Counts: x, y: differences 1, products 3, two sums: 5; w: the factors 1 and 2, products 4,
+// two sums: 6.
+struct ChartRow {
+  double x, y, w, xa, ya, wa;  // the values and their absolute programs
+};
+inline ChartRow chart_row(const Point& e1, const Point& e2, const Point& t0, const Point& q,
+                          const Point& d) {
+  const Point e = sub(q, d), sq = sub(q, t0), sd = sub(d, t0);
+  const Point s{sq[0] + sd[0], sq[1] + sd[1], sq[2] + sd[2]};
+  const Point sa{std::fabs(sq[0]) + std::fabs(sd[0]), std::fabs(sq[1]) + std::fabs(sd[1]),
+                 std::fabs(sq[2]) + std::fabs(sd[2])};
+  const Point ea{std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])};
+  return {dot(e1, e), dot(e2, e), dot(e, s), dot_abs(e1, e), dot_abs(e2, e), dot(ea, sa)};
+}
+inline bool chart_row_in_range(const Point& t0, const Point& q, const Point& d) {
+  return entry_in_range(sub(q, d)) && entry_in_range(sub(q, t0)) && entry_in_range(sub(d, t0));
+}
+
+// The chart orientation of a, b, c: det [e1.(b - a) e1.(c - a); e2.(b - a) e2.(c - a)].
+// Counts: entries 5, products 11, the difference: K = 12, coefficient 13u.
+inline Filtered chart_orient(const Point& t0, const Point& t1, const Point& t2, const Point& a,
+                             const Point& b, const Point& c) {
+  const Point e1 = sub(t1, t0), e2 = sub(t2, t0), u = sub(b, a), v = sub(c, a);
+  if (!entry_in_range(e1) || !entry_in_range(e2) || !entry_in_range(u) || !entry_in_range(v))
+    return Filtered::Unsure;
+  const double xb = dot(e1, u), xc = dot(e1, v), yb = dot(e2, u), yc = dot(e2, v);
+  const double bar = dot_abs(e1, u) * dot_abs(e2, v) + dot_abs(e1, v) * dot_abs(e2, u);
+  return sign_beyond(xb * yc - xc * yb, 13 * unit_roundoff * bar);
+}
+
+// The chart in-circle determinant (surface/chart.hpp): rows (x, y, w) of a, b, c seen from d,
+//   x_a (y_b w_c - y_c w_b) + x_b (y_c w_a - y_a w_c) + x_c (y_a w_b - y_b w_a).
+// Counts: y w 5 + 6 + 1 = 12, the difference 13, times x 19, two sums: K = 21, coefficient
+// 22u. Degree 6 in the differences.
+inline Filtered chart_incircle(const Point& t0, const Point& t1, const Point& t2,
+                               const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Point e1 = sub(t1, t0), e2 = sub(t2, t0);
+  if (!entry_in_range(e1) || !entry_in_range(e2) || !chart_row_in_range(t0, a, d) ||
+      !chart_row_in_range(t0, b, d) || !chart_row_in_range(t0, c, d))
+    return Filtered::Unsure;
+  const ChartRow ra = chart_row(e1, e2, t0, a, d), rb = chart_row(e1, e2, t0, b, d),
+                 rc = chart_row(e1, e2, t0, c, d);
+  const double det = (ra.x * (rb.y * rc.w - rc.y * rb.w) + rb.x * (rc.y * ra.w - ra.y * rc.w)) +
+                     rc.x * (ra.y * rb.w - rb.y * ra.w);
+  const double bar = (ra.xa * (rb.ya * rc.wa + rc.ya * rb.wa) +
+                      rb.xa * (rc.ya * ra.wa + ra.ya * rc.wa)) +
+                     rc.xa * (ra.ya * rb.wa + rb.ya * ra.wa);
+  return sign_beyond(det, 22 * unit_roundoff * bar);
 }
 
 }  // namespace pdr::filter

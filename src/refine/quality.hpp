@@ -7,15 +7,13 @@
 //   volume_above     volume6 > 6 V              (size control, --max-volume V)
 // With u = b-a, v = c-a, w = d-a, D = det[u,v,w] and X = |u|^2 v x w + |v|^2 w x u +
 // |w|^2 u x v, the circumcenter is a + X / (2D), so R^2 = |X|^2 / (4 D^2): every test is a
-// sign of a polynomial in the input doubles. Evaluation: each component of X and D in
-// double, with a forward error bound 64u times the same program on absolute values (the
-// programs have depth <= 6; Higham's gamma_6 < 7u, so the bound holds with a wide margin)
-// giving intervals for |X|^2 and D^2; when the intervals of the two sides are separated
-// (after a further relative margin 2^-30 for the rounding of squares, sums and B^2) the
-// filter decides; otherwise GMP rationals (geom/exact.hpp) do. The doubles of the filter
-// never decide alone a case the bound does not cover. Preconditions: the tet is positive
-// (orient3d > 0, as every live tet of the kernel) and its coordinates in the input range
-// (geom/input_range.hpp: no overflow or underflow in the filter).
+// sign of a polynomial in the input doubles. Evaluation: the filters of
+// geom/filter_kit.hpp (tet_measures: X and D with their derived bounds, 13u and 9u, carried
+// as Brackets through the squares and products, every rounding and underflow covered)
+// decide when the two sides' brackets are separated; otherwise, and when a coordinate
+// difference is outside the kit's range, GMP rationals (geom/exact.hpp) do. The doubles of
+// the filter never decide alone a case the bound does not cover. Precondition: the tet is
+// positive (orient3d > 0, as every live tet of the kernel).
 #pragma once
 
 #include <optional>

@@ -10,13 +10,8 @@
 // (w_q = |q - t0|^2 - |d - t0|^2). The determinant is
 //     x_a (y_b w_c - y_c w_b) + x_b (y_c w_a - y_a w_c) + x_c (y_a w_b - y_b w_a).
 // Its sign is evaluated in three stages:
-//   1. Filter. Every leaf difference is rounded once and e1, e2 once; by Higham's bound
-//      for straight-line programs (a product adds the operands' counts plus one, a sum
-//      their maximum plus one) x, y carry gamma_5, w gamma_6, the determinant gamma_21
-//      times the same program on absolute values; that program is itself rounded
-//      (gamma_21 below it), so 32u of it as computed bounds the error. Used only when every
-//      difference is 0 or in [2^-150, 2^150] (no underflow or overflow in a product of six).
-//      Valid with or without fused multiply-add.
+//   1. Filter: filter::chart_incircle (geom/filter_kit.hpp: K = 21, coefficient 22u, with
+//      its range precondition); plane_orient's filter is filter::chart_orient (K = 12, 13u).
 //   2. Coplanar shortcut. If orient3d(a, b, c, d) == 0 and o = plane_orient(a, b, c) != 0,
 //      the sign is incircle3(a, b, c, d) * o: every sphere through a, b, c meets their plane
 //      in their circle (the adaptive kernel decides cocircular grids without GMP).
@@ -31,6 +26,7 @@
 
 #include <cmath>
 
+#include "geom/filter_kit.hpp"
 #include "geom/predicates.hpp"
 #include "geom/sos_order.hpp"
 
@@ -69,52 +65,6 @@ Point place_on_facet(const FacetChart& ch, Point p) {
 
 namespace {
 
-constexpr double kU = 0x1p-53;
-
-bool in_range(double x) {
-  const double m = std::fabs(x);
-  return m == 0 || (m >= 0x1p-150 && m <= 0x1p150);
-}
-
-struct Frame {
-  Point e1, e2;  // rounded t1 - t0, t2 - t0
-  bool ok;
-};
-
-Frame frame(const FacetChart& ch) {
-  Frame f{};
-  f.ok = true;
-  for (int k = 0; k < 3; ++k) {
-    f.e1[k] = ch.t1[k] - ch.origin[k];
-    f.e2[k] = ch.t2[k] - ch.origin[k];
-    f.ok = f.ok && in_range(f.e1[k]) && in_range(f.e2[k]);
-  }
-  return f;
-}
-
-// One row of the filter: the plane coordinates and the lift difference of q against d,
-// with their absolute-value programs.
-struct Row {
-  double x, y, w, xa, ya, wa;
-  bool ok;
-};
-
-Row filter_row(const FacetChart& ch, const Frame& fr, const Point& q, const Point& d) {
-  Row r{};
-  r.ok = fr.ok;
-  for (int k = 0; k < 3; ++k) {
-    const double e = q[k] - d[k], sq = q[k] - ch.origin[k], sd = d[k] - ch.origin[k];
-    r.ok = r.ok && in_range(e) && in_range(sq) && in_range(sd);
-    r.x += fr.e1[k] * e;
-    r.xa += std::fabs(fr.e1[k]) * std::fabs(e);
-    r.y += fr.e2[k] * e;
-    r.ya += std::fabs(fr.e2[k]) * std::fabs(e);
-    r.w += e * (sq + sd);
-    r.wa += std::fabs(e) * (std::fabs(sq) + std::fabs(sd));
-  }
-  return r;
-}
-
 mpq_class dot_exact(const FacetChart& ch, const Point& t, const Point& q, const Point& d) {
   mpq_class s = 0;
   for (int k = 0; k < 3; ++k)
@@ -143,24 +93,9 @@ Sign raw_gmp(const FacetChart& ch, const Point* p[4]) {
 }  // namespace
 
 Sign plane_orient(const FacetChart& ch, const Point& a, const Point& b, const Point& c) {
-  // det [e1.(b-a) e1.(c-a); e2.(b-a) e2.(c-a)]: entries gamma_5, products gamma_11, the
-  // difference gamma_12; 16u of the computed absolute program bounds the error.
-  const Frame fr = frame(ch);
-  bool ok = fr.ok;
-  double xb = 0, xc = 0, yb = 0, yc = 0, xba = 0, xca = 0, yba = 0, yca = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double u = b[k] - a[k], v = c[k] - a[k];
-    ok = ok && in_range(u) && in_range(v);
-    xb += fr.e1[k] * u, xba += std::fabs(fr.e1[k]) * std::fabs(u);
-    xc += fr.e1[k] * v, xca += std::fabs(fr.e1[k]) * std::fabs(v);
-    yb += fr.e2[k] * u, yba += std::fabs(fr.e2[k]) * std::fabs(u);
-    yc += fr.e2[k] * v, yca += std::fabs(fr.e2[k]) * std::fabs(v);
-  }
-  if (ok) {
-    const double det = xb * yc - xc * yb, bound = 16 * kU * (xba * yca + xca * yba);
-    if (det > bound) return Sign::Positive;
-    if (det < -bound) return Sign::Negative;
-  }
+  // det [e1.(b-a) e1.(c-a); e2.(b-a) e2.(c-a)]
+  const Filtered f = filter::chart_orient(ch.origin, ch.t1, ch.t2, a, b, c);
+  if (f != Filtered::Unsure) return static_cast<Sign>(f);
   const mpq_class det = dot_exact(ch, ch.t1, b, a) * dot_exact(ch, ch.t2, c, a) -
                         dot_exact(ch, ch.t1, c, a) * dot_exact(ch, ch.t2, b, a);
   return sign_of(sgn(det));
@@ -168,19 +103,8 @@ Sign plane_orient(const FacetChart& ch, const Point& a, const Point& b, const Po
 
 Sign chart_incircle_raw(const FacetChart& ch, const Point& a, const Point& b, const Point& c,
                         const Point& d) {
-  const Frame fr = frame(ch);
-  const Row ra = filter_row(ch, fr, a, d), rb = filter_row(ch, fr, b, d),
-            rc = filter_row(ch, fr, c, d);
-  if (ra.ok && rb.ok && rc.ok) {
-    const double det = ra.x * (rb.y * rc.w - rc.y * rb.w) + rb.x * (rc.y * ra.w - ra.y * rc.w) +
-                       rc.x * (ra.y * rb.w - rb.y * ra.w);
-    const double bar = ra.xa * (rb.ya * rc.wa + rc.ya * rb.wa) +
-                       rb.xa * (rc.ya * ra.wa + ra.ya * rc.wa) +
-                       rc.xa * (ra.ya * rb.wa + rb.ya * ra.wa);
-    const double bound = 32 * kU * bar;
-    if (det > bound) return Sign::Positive;
-    if (det < -bound) return Sign::Negative;
-  }
+  const Filtered f = filter::chart_incircle(ch.origin, ch.t1, ch.t2, a, b, c, d);
+  if (f != Filtered::Unsure) return static_cast<Sign>(f);
   if (orient3d(a, b, c, d) == Sign::Zero) {
     const Sign o = plane_orient(ch, a, b, c);
     if (o != Sign::Zero) return incircle3(a, b, c, d) * o;
