@@ -150,7 +150,10 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
                            {"subfacet_circumcenters", rr.stats.subfacet_circumcenters},
                            {"subsegment_splits", rr.stats.subsegment_splits},
                            {"refused", rr.stats.refused},
-                           {"vertex_cap", rr.stats.vertex_cap}});
+                           {"vertex_cap", rr.stats.vertex_cap},
+                           {"conformity_breaks", rr.stats.conformity_breaks},
+                           {"conformity_splits", rr.stats.conformity_splits},
+                           {"conformity_refused", rr.stats.conformity_refused}});
   if (!rr.stop_reason.empty()) summary.set("stop_reason", rr.stop_reason);
   if (!rr.unsplit.empty()) summary.set("unsplit", rr.unsplit);  // refused by the guards
   if (rr.stats.audit_failures > 0)
@@ -187,6 +190,13 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
     code = kExitNotGuaranteed;
   }
 
+  if (rr.stats.conformity_refused > 0) {
+    // Elements of D stayed out of T (refine/conformity.hpp): said even with --no-check.
+    summary.set("conformity", "NOT CONFORMING: " + std::to_string(rr.stats.conformity_refused) +
+                                  " refinements of surface elements missing from the "
+                                  "tetrahedralization were refused (see unsplit)");
+    if (code == kExitOk) code = kExitNotGuaranteed;
+  }
   write_outputs(mesh, args.prefix, formats, timer, summary);
 
   if (args.check) {

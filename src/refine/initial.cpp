@@ -1,25 +1,10 @@
 // The initial tetrahedralization T_o (paper §2.1 step 3); see refine/initial.hpp.
 #include "refine/initial.hpp"
 
-#include <sstream>
-
 #include "delaunay/bulk.hpp"
+#include "mesh/tables.hpp"
 
 namespace pdr::refine {
-namespace {
-
-std::string describe_subfacet(const SurfaceMesh& m, std::uint32_t t) {
-  std::ostringstream os;
-  const Subfacet& f = m.subfacet(t);
-  os << "subfacet " << t << " of " << m.facet_name(f.facet) << ", vertices";
-  for (int i = 0; i < 3; ++i) {
-    const Point& p = m.point(f.v[i]);
-    os << ' ' << f.v[i] << " (" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-  }
-  return os.str();
-}
-
-}  // namespace
 
 VolumeMesh build_initial(SurfaceMesh surf, std::span<const Point> holes, std::uint64_t seed) {
   VolumeMesh m;
@@ -45,11 +30,28 @@ VolumeMesh build_initial(SurfaceMesh surf, std::span<const Point> holes, std::ui
     throw RefineError("volume.initial: surface vertex " + std::to_string(m.d2s[r.duplicates[0].id]) +
                       " duplicates vertex " + std::to_string(m.d2s[r.duplicates[0].kept]));
 
-  // Flood fill with parity from a ghost tet.
+  // Conformity: the subfacets that are faces and the subsegments that are edges of T_o.
   const TetStore& s = m.dt.store();
+  std::vector<std::uint8_t> found(m.surf.subfacets().size(), 0);
+  std::vector<std::uint8_t> found_seg(m.surf.subsegments().size(), 0);
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t) || s.is_ghost(t)) continue;
+    const VertexId* v = s.vertices(t);
+    for (int f = 0; f < 4; ++f)
+      if (const auto sf = m.face_subfacet(t, f)) found[*sf] = 1;
+    for (const auto& [i, j] : tables::kEdgeVertex)
+      if (const auto sub = m.subsegment(v[i], v[j])) found_seg[*sub] = 1;
+  }
+  for (std::uint32_t t = 0; t < m.surf.subfacets().size(); ++t)
+    if (m.surf.subfacet(t).alive && !found[t]) m.missing_subfacets.push_back(t);
+  for (std::uint32_t t = 0; t < m.surf.subsegments().size(); ++t)
+    if (!found_seg[t]) m.missing_subsegments.push_back(t);
+  const bool conforms = m.missing_subfacets.empty() && m.missing_subsegments.empty();
+
+  // Flood fill with parity from a ghost tet. When T_o does not conform the flags are
+  // provisional (the refinement recomputes them once it does): the first one reached wins.
   m.inside.assign(s.slots(), 0);
   std::vector<std::uint8_t> seen(s.slots(), 0);
-  std::vector<std::uint8_t> found(m.surf.subfacets().size(), 0);
   std::vector<TetId> queue;
   for (TetId t = 0; t < s.slots() && queue.empty(); ++t)
     if (s.is_alive(t) && s.is_ghost(t)) queue.push_back(t);
@@ -59,24 +61,19 @@ VolumeMesh build_initial(SurfaceMesh surf, std::span<const Point> holes, std::ui
     const TetId t = queue[i];
     for (int f = 0; f < 4; ++f) {
       const auto sf = m.face_subfacet(t, f);
-      if (sf) found[*sf] = 1;
       const TetId n = s.neighbour(t, f);
       const std::uint8_t want = s.is_ghost(n) ? 0 : static_cast<std::uint8_t>(m.inside[t] ^ (sf ? 1 : 0));
       if (!seen[n]) {
         seen[n] = 1;
         m.inside[n] = want;
         queue.push_back(n);
-      } else if (m.inside[n] != want) {
+      } else if (m.inside[n] != want && conforms) {
         throw RefineError("volume.parity: tets " + std::to_string(t) + " and " +
                           std::to_string(n) + " disagree on the side of their common face");
       }
     }
   }
-  for (std::uint32_t t = 0; t < m.surf.subfacets().size(); ++t)
-    if (m.surf.subfacet(t).alive && !found[t])
-      throw RefineError("volume.conformity: " + describe_subfacet(m.surf, t) +
-                        " is not a face of the initial Delaunay tetrahedralization (an "
-                        "encroached subfacet: the domain is probably inadmissible)");
+  if (!conforms) return m;
 
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const Location loc = m.dt.locate(holes[i]);

@@ -4,15 +4,17 @@
 //
 // build_initial: the Delaunay tetrahedralization of D_o's vertices (bulk_insert, ids not
 // renumbered beyond skipping unused input points), then
-//   - conformity: every live subfacet of D_o is a face of T_o (for an admissible domain
-//     the subfacets are unencroached after §2.1, so their equatorial balls are empty and
-//     they are Delaunay faces); a missing one throws RefineError("volume.conformity: ...")
-//     naming the facet, its vertices and coordinates;
+//   - conformity: every live subfacet of D_o should be a face and every subsegment an edge
+//     of T_o (for an admissible domain the subfacets are unencroached after §2.1, so their
+//     equatorial balls are empty and they are Delaunay faces); outside the theory some may
+//     not be: they are listed (VolumeMesh::missing_subfacets, missing_subsegments) and the
+//     refinement restores them first (refine/conformity.hpp);
 //   - classification: a flood fill from the ghost tets over all faces, the flag toggling
-//     across subfacets (the parity definition of Ω, domain/domain.hpp); an inconsistent
-//     parity (a face reached with two flags) throws RefineError("volume.parity: ...");
-//   - volume holes: the tet containing each hole point must be outside, else
-//     RefineError("volume.hole: ...").
+//     across subfacets (the parity definition of Ω, domain/domain.hpp); on a conforming
+//     T_o an inconsistent parity (a face reached with two flags) throws
+//     RefineError("volume.parity: ..."); otherwise the flags are provisional;
+//   - volume holes (conforming T_o): the tet containing each hole point must be outside,
+//     else RefineError("volume.hole: ...").
 // "Remove" is a flag: outside tets stay in T (it covers the hull) and are never refined.
 #pragma once
 

@@ -19,6 +19,7 @@
 #include "refine/audit.hpp"
 #include "refine/budget.hpp"
 #include "refine/closure.hpp"
+#include "refine/conformity.hpp"
 #include "refine/flat.hpp"
 #include "refine/guard.hpp"
 #include "refine/leftovers.hpp"
@@ -43,6 +44,7 @@ class Refiner {
     res_.stats.h = std::numeric_limits<double>::infinity();
     const TetStore& s = m_.dt.store();
     if (!o_.admissible) start_guards();
+    start_missing();
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
     for (;;) {
@@ -52,7 +54,7 @@ class Refiner {
       }
       QueuedTet e;
       if (!queue_.pop(e)) break;  // no bad tet left
-      if (!WorkQueue::current(s, e)) continue;
+      if (!WorkQueue::current(s, e) || !m_.is_inside(e.t)) continue;  // reflagged outside
       if (at_cap()) break;
       const std::size_t before = m_.dt.num_points();
       refine_tet(e.t);
@@ -63,6 +65,7 @@ class Refiner {
                      queue_.pending());
     }
     if (o_.progress) std::fprintf(stderr, "\n");
+    abandon_missing();
     refused_.seal();
     res_.leftovers = collect_leftovers(m_, o_.ratio, refused_, res_.stop_reason);
     return std::move(res_);
@@ -84,6 +87,11 @@ class Refiner {
   RefusedTets refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
+  // Conformity (refine/conformity.hpp): elements of D missing from T, the tets made while
+  // any is, and the doomed elements of the cavity being committed.
+  EncroachedLists missing_, doomed_;
+  std::vector<TetId> dirty_;
+  bool broken_ = false;
 
   const Point& pt(VertexId v) const { return m_.dt.point(v); }
 
@@ -93,6 +101,7 @@ class Refiner {
   // first, then subfacets: Fig. 2's order). nullopt when none is waiting; false when the
   // budget is spent.
   std::optional<bool> refine_encroached() {
+    if (const auto done = restore_missing()) return done;
     while (!enc_.subsegments.empty()) {
       const Encroached e = enc_.subsegments.back();
       enc_.subsegments.pop_back();
@@ -112,6 +121,104 @@ class Refiner {
       return true;
     }
     return std::nullopt;
+  }
+
+  // Conformity first (refine/conformity.hpp): refines the next element of D missing from T
+  // (Refine(s), then Refine(f)); once none is, recomputes the flags of the tets made
+  // meanwhile. nullopt when nothing was missing; false when the budget is spent.
+  std::optional<bool> restore_missing() {
+    while (!missing_.subsegments.empty() || !missing_.subfacets.empty()) {
+      const bool seg = !missing_.subsegments.empty();
+      std::vector<Encroached>& list = seg ? missing_.subsegments : missing_.subfacets;
+      const Encroached e = list.back();
+      list.pop_back();
+      if (seg ? !still_subsegment(m_.surf, e) : !still_subfacet(m_.surf, e)) continue;
+      if (at_cap()) {
+        list.push_back(e);
+        return false;
+      }
+      ++res_.stats.conformity_splits;
+      const std::size_t before = m_.dt.num_points();
+      if (seg) {
+        if (auto why = split(e.id, kNoTet)) unsplit(std::move(*why));
+      } else {
+        refine_subfacet(e.id, kNoTet, kNoTet);
+      }
+      if (m_.dt.num_points() == before) ++res_.stats.conformity_refused;
+      // Refine(f) may have split a subsegment instead: the subfacet waits again.
+      if (m_.dt.num_points() > before && !seg && still_subfacet(m_.surf, e))
+        missing_.subfacets.push_back(e);
+      return true;
+    }
+    if (!broken_) return std::nullopt;
+    broken_ = false;
+    const std::vector<TetId> made = reflag(m_, dirty_);
+    dirty_.clear();
+    for (const TetId t : made)
+      if (m_.is_inside(t)) consider(t);
+    return true;
+  }
+
+  // The budget ended with elements of D missing from T: each is listed, the flags are
+  // made as consistent as T allows.
+  void abandon_missing() {
+    for (const auto* list : {&missing_.subsegments, &missing_.subfacets})
+      for (const Encroached& e : *list) {
+        const bool seg = list == &missing_.subsegments;
+        if (seg ? still_subsegment(m_.surf, e) : still_subfacet(m_.surf, e))
+        {
+          ++res_.stats.conformity_refused;
+          unsplit(std::string("volume.conformity: ") + (seg ? "subsegment " : "subfacet ") +
+                  std::to_string(e.id) + " is not in T (" + res_.stop_reason + ")");
+        }
+      }
+    missing_ = {};
+    if (broken_) reflag(m_, dirty_);
+    broken_ = false;
+    dirty_.clear();
+  }
+
+  // Commits cavity c (p becomes D's vertex sv, kNone: off ∂Ω) and records the elements of
+  // D that are not in T afterwards.
+  VertexId insert(const Cavity& c, std::uint32_t sv) {
+    doomed_ = {};
+    doomed_elements(m_, c, doomed_);
+    const VertexId v = commit_point(m_, c, sv, star_);
+    const std::size_t had = missing_.subsegments.size() + missing_.subfacets.size();
+    for (const Encroached& e : doomed_.subsegments) missing_.subsegments.push_back(e);
+    for (const Encroached& e : doomed_.subfacets) missing_.subfacets.push_back(e);
+    missing_at(m_, v, star_, missing_);
+    const bool fresh = missing_.subsegments.size() + missing_.subfacets.size() > had;
+    if (fresh) {
+      ++res_.stats.conformity_breaks;
+      if (o_.audit)
+        audited([&] {
+          throw RefineError("volume.conformity: after inserting " + point_text(pt(v)) +
+                            ", an element of D at it or in its cavity is not in T");
+        });
+    }
+    if (fresh || broken_) {
+      broken_ = true;
+      dirty_.insert(dirty_.end(), star_.begin(), star_.end());
+    }
+    return v;
+  }
+
+  // The elements of D that T_o lacks (refine/initial.hpp): restored before anything else,
+  // every tet's flag recomputed after.
+  void start_missing() {
+    if (m_.missing_subfacets.empty() && m_.missing_subsegments.empty()) return;
+    ++res_.stats.conformity_breaks;
+    for (const std::uint32_t id : m_.missing_subsegments) {
+      const Subsegment& x = m_.surf.subsegment(id);
+      missing_.subsegments.push_back({id, {x.v[0], x.v[1], 0}, kNone, kNoTet});
+    }
+    for (const std::uint32_t id : m_.missing_subfacets)
+      missing_.subfacets.push_back({id, m_.surf.subfacet(id).v, kNone, kNoTet});
+    broken_ = true;
+    const TetStore& s = m_.dt.store();
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t)) dirty_.push_back(t);
   }
 
   // Inadmissible domains: shells and protected lengths at the acute vertices (every input
@@ -252,7 +359,7 @@ class Refiner {
     if (!plan(p, hint, cav_, outside))
       throw RefineError("refine.split: the split point " + point_text(p) + " of " + name +
                         " is already a vertex");
-    const VertexId v = commit_point(m_, cav_, r.vertex, star_);
+    const VertexId v = insert(cav_, r.vertex);
     ++res_.stats.subsegment_splits;
     after_insert(v, "subsegment", piece2);
     return std::nullopt;
@@ -298,26 +405,10 @@ class Refiner {
         m_.surf.point(x.v[0]), m_.surf.point(x.v[1]), m_.surf.point(x.v[2]));
     res_.stats.h = std::min(res_.stats.h, std::sqrt(r2 / 2));
     const std::uint32_t sv = m_.surf.add_vertex(fc.p, {HomeKind::Facet, fc.facet});
-    const std::vector<std::uint32_t> fresh = commit_facet_cavity(m_.surf, fc, sv);
-    const VertexId v = commit_point(m_, cav2_, sv, star_);
+    commit_facet_cavity(m_.surf, fc, sv);
+    const VertexId v = insert(cav2_, sv);
     ++res_.stats.subfacet_circumcenters;
-    verify_subfacets_present(v, fresh);
     after_insert(v, "subfacet", r2);
-  }
-
-  // The new subfacets (p, e) must be faces of T (§1.1): each among the star's faces.
-  void verify_subfacets_present(VertexId v, const std::vector<std::uint32_t>& fresh) {
-    std::size_t seen = 0;
-    const TetStore& s = m_.dt.store();
-    for (const TetId t : star_)
-      for (int f = 0; f < 4; ++f)
-        if (s.vertex(t, f) != v && m_.face_subfacet(t, f)) ++seen;  // f contains v
-    // Each new subfacet is on two tets of the star.
-    if (seen != 2 * fresh.size())
-      throw RefineError("volume.conformity: after inserting the subfacet circumcenter " +
-                        point_text(pt(v)) + ", " + std::to_string(fresh.size()) +
-                        " new subfacets but " + std::to_string(seen) +
-                        " tet faces at the vertex are subfacets (expected twice as many)");
   }
 
   bool refine_own_element(TetId t, const Point& p) {
@@ -358,6 +449,18 @@ class Refiner {
       refine_subfacet(*f, t, t);
       return;
     }
+    // An element of D the cavity would take out of T is refined first, as if p encroached
+    // it (refine/conformity.hpp).
+    doomed_ = {};
+    doomed_elements(m_, cav_, doomed_);
+    if (!doomed_.subsegments.empty()) {
+      if (auto why = split(doomed_.subsegments.front().id, t)) refuse(t, std::move(*why));
+      return;
+    }
+    if (!doomed_.subfacets.empty()) {
+      refine_subfacet(doomed_.subfacets.front().id, t, t);
+      return;
+    }
     if (outside) {
       refuse(t, "refine.outside: circumcenter " + point_text(p) +
                     " lies outside the domain but encroaches no subsegment or subfacet of "
@@ -366,7 +469,7 @@ class Refiner {
     }
     const double r2 = construct::circumradius2(a, b, c, d);
     res_.stats.h = std::min(res_.stats.h, std::sqrt(r2) / 2);
-    const VertexId nv = commit_point(m_, cav_, kNone, star_);
+    const VertexId nv = insert(cav_, kNone);
     ++res_.stats.tet_circumcenters;
     after_insert(nv, "tet", r2);
   }

@@ -38,6 +38,11 @@
 //     reason;
 //   - the vertex cap (RefineOptions::max_vertices, else derived from the input size,
 //     the domain's bounding box and the resolution) stops the loop with stop_reason set.
+// Conformity (refine/conformity.hpp): an element of D that an insertion would take out of
+// T makes a tet circumcenter refine it instead; one that another insertion (or T_o) leaves
+// out of T is refined before anything else, and the flags of the tets made meanwhile are
+// recomputed once T conforms again. A guard refusing such a refinement leaves T
+// non-conforming there: counted (conformity_refused) and reported.
 // After the loop every inside tet with ratio >= B is listed (leftovers) with the reason,
 // and every encroached element the guards refused is listed (unsplit); the exact checker
 // on the output reports any encroachment left (pdr mesh then exits 3).
@@ -89,6 +94,9 @@ struct RefineStats {
   std::size_t vertex_cap = 0;
   std::size_t encroached_splits = 0;    // elements the encroachment guard refined
   std::size_t encroached_refused = 0;   // ... and those it could not (unsplit)
+  std::size_t conformity_breaks = 0;    // insertions after which D was not in T
+  std::size_t conformity_splits = 0;    // refinements of elements missing from T
+  std::size_t conformity_refused = 0;   // ... that a guard refused: T does not conform
   double h = 0;  // the audit's h: min over refinements of (l/2, R_f/√2, R_t/2)
   std::size_t audit_failures = 0;  // inadmissible domains only (else the first throws)
   std::string audit_note;          // the first of them

@@ -55,6 +55,8 @@ struct VolumeMesh {
   std::vector<std::uint32_t> d2s;    // T vertex -> D vertex or kNone
   std::vector<std::uint32_t> s2d;    // D vertex -> T vertex or kNone
   std::vector<VertexClass> vclass;   // T vertex -> where it lies (see above)
+  // Elements of D that T_o lacks (refine/initial.hpp); the refinement restores them.
+  std::vector<std::uint32_t> missing_subfacets, missing_subsegments;
 
   // Records T's vertex v (the next one: v == d2s.size()) as D's vertex surf_vertex
   // (kNone: off ∂Ω), in d2s, s2d and vclass.

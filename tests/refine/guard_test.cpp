@@ -96,6 +96,27 @@ Plc wedge(double deg) {
 // left with ratio >= 2 has a vertex next to the wedge's sharp edge (the z axis; "next to":
 // within 1% of the wedge's 10-unit legs, about 5 protected lengths): the guards give up
 // only there.
+// The paper's tee (data/tee-paper.poly: re-entrant edges at 290.56 deg, tips at 69.44
+// deg). Across the re-entrant edges a new subfacet can have a vertex of the other facet in
+// its equatorial ball, so it is not a face of T when made: refine/conformity.hpp refines it
+// until it is, and recomputes the flags. Before that, V = 0.1 ended in an internal error
+// (volume.conformity). Every exact check passes; the recovery path ran.
+TEST(RefineGuard, PaperTeeRecoversConformity) {
+  const Plc tee = test::read_data("tee-paper.poly");
+  std::size_t breaks = 0;
+  for (const double v : {0.1, 0.02}) {
+    SCOPED_TRACE("max_volume " + std::to_string(v));
+    const GuardRun r = mesh(tee, Sizes{v, {}});
+    EXPECT_FALSE(r.admissible);
+    EXPECT_TRUE(r.rr.stop_reason.empty()) << r.rr.stop_reason;
+    EXPECT_TRUE(r.rr.unsplit.empty()) << r.rr.unsplit.front();
+    EXPECT_TRUE(r.report.ok()) << check::to_text(r.report);
+    EXPECT_GE(r.rr.stats.conformity_splits, r.rr.stats.conformity_breaks);
+    breaks += r.rr.stats.conformity_breaks;
+  }
+  EXPECT_GT(breaks, 0u);
+}
+
 TEST(RefineGuard, SharpWedgesTerminateWithQualityOrAReport) {
   for (const double deg : {30.0, 20.0, 15.0}) {
     SCOPED_TRACE(std::to_string(deg) + " deg");

@@ -1,0 +1,128 @@
+// Conformity of T to D during refinement; see refine/conformity.hpp.
+#include "refine/conformity.hpp"
+
+#include <algorithm>
+
+#include "mesh/tables.hpp"
+
+namespace pdr::refine {
+namespace {
+
+bool holds(const VertexId* v, VertexId x) {
+  return v[0] == x || v[1] == x || v[2] == x || v[3] == x;
+}
+
+// Whether some boundary face of c (a face of a conflict tet, opposite vertex face_of(h))
+// holds both a and b.
+bool on_boundary(const TetStore& s, const Cavity& c, VertexId a, VertexId b) {
+  for (const HalfFace h : c.boundary) {
+    const VertexId* v = s.vertices(tet_of(h));
+    const VertexId apex = v[face_of(h)];
+    if (apex != a && apex != b && holds(v, a) && holds(v, b)) return true;
+  }
+  return false;
+}
+
+void add_subfacet(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
+  for (const Encroached& e : out.subfacets)
+    if (e.id == id) return;
+  out.subfacets.push_back({id, m.surf.subfacet(id).v, kNone, kNoTet});
+}
+
+void add_subsegment(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
+  for (const Encroached& e : out.subsegments)
+    if (e.id == id) return;
+  const Subsegment& x = m.surf.subsegment(id);
+  out.subsegments.push_back({id, {x.v[0], x.v[1], 0}, kNone, kNoTet});
+}
+
+}  // namespace
+
+void doomed_elements(const VolumeMesh& m, const Cavity& c, EncroachedLists& out) {
+  const TetStore& s = m.dt.store();
+  for (const TetId t : c.conflict) {
+    const VertexId* v = s.vertices(t);
+    for (int f = 0; f < 4; ++f) {
+      const auto sf = m.face_subfacet(t, f);
+      if (!sf) continue;
+      const TetId n = s.neighbour(t, f);
+      if (std::find(c.conflict.begin(), c.conflict.end(), n) != c.conflict.end())
+        add_subfacet(m, *sf, out);
+    }
+    for (const auto& [i, j] : tables::kEdgeVertex) {
+      const auto sub = m.subsegment(v[i], v[j]);
+      if (sub && !on_boundary(s, c, v[i], v[j])) add_subsegment(m, *sub, out);
+    }
+  }
+}
+
+void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
+                EncroachedLists& out) {
+  if (v >= m.d2s.size() || m.d2s[v] == kNone) return;
+  const std::uint32_t sv = m.d2s[v];
+  const TetStore& s = m.dt.store();
+  // Every tet of the star holds v: {v, a, b} is a face and {v, a} an edge of T iff some
+  // tet of the star holds a and b, or a.
+  auto in_star = [&](VertexId a, VertexId b) {
+    for (const TetId t : star)
+      if (!s.is_ghost(t) && holds(s.vertices(t), a) && holds(s.vertices(t), b)) return true;
+    return false;
+  };
+  for (const std::uint32_t id : m.surf.vertex_subfacets(sv)) {
+    const Subfacet& f = m.surf.subfacet(id);
+    if (!f.alive) continue;
+    VertexId other[2];
+    int k = 0;
+    for (const std::uint32_t x : f.v)
+      if (x != sv) other[k++] = m.s2d[x];
+    if (!in_star(other[0], other[1])) add_subfacet(m, id, out);
+  }
+  for (const std::uint32_t id : m.surf.vertex_subsegments(sv)) {
+    const Subsegment& x = m.surf.subsegment(id);
+    if (x.v[0] != sv && x.v[1] != sv) continue;  // a stale entry
+    const VertexId a = m.s2d[x.v[0] == sv ? x.v[1] : x.v[0]];
+    if (!in_star(a, a)) add_subsegment(m, id, out);
+  }
+}
+
+std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
+  const TetStore& s = m.dt.store();
+  std::vector<TetId> live;
+  for (const TetId t : made)
+    if (t < s.slots() && s.is_alive(t) && !s.is_ghost(t)) live.push_back(t);
+  std::sort(live.begin(), live.end());
+  live.erase(std::unique(live.begin(), live.end()), live.end());
+  auto in_made = [&](TetId t) { return std::binary_search(live.begin(), live.end(), t); };
+  std::vector<std::uint8_t> done(live.size(), 0);
+  auto index = [&](TetId t) {
+    return static_cast<std::size_t>(std::lower_bound(live.begin(), live.end(), t) - live.begin());
+  };
+  std::vector<TetId> queue;
+  // Seeds: tets with a neighbour whose flag predates the break.
+  for (std::size_t i = 0; i < live.size(); ++i)
+    for (int f = 0; f < 4; ++f) {
+      const TetId n = s.neighbour(live[i], f);
+      if (!s.is_ghost(n) && in_made(n)) continue;
+      const bool across = m.face_subfacet(live[i], f).has_value();
+      m.inside[live[i]] = static_cast<std::uint8_t>((s.is_ghost(n) ? 0 : m.inside[n]) ^ across);
+      done[i] = 1;
+      queue.push_back(live[i]);
+      break;
+    }
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const TetId t = queue[q];
+    for (int f = 0; f < 4; ++f) {
+      const TetId n = s.neighbour(t, f);
+      if (s.is_ghost(n) || !in_made(n)) continue;
+      const std::size_t j = index(n);
+      if (done[j]) continue;
+      const bool across = m.face_subfacet(t, f).has_value();
+      m.inside[n] = static_cast<std::uint8_t>(m.inside[t] ^ across);
+      done[j] = 1;
+      queue.push_back(n);
+    }
+  }
+  return live;
+}
+
+}  // namespace pdr::refine

@@ -1,0 +1,57 @@
+// Conformity of T to D during refinement (paper §1.1: "the subsegments and subfacets in D
+// appear in T"), kept outside the theory too.
+//
+// In an admissible domain Lemma 1 keeps every subsegment an edge and every subfacet a face
+// of T. Outside the theory an insertion can break this in two ways: its cavity swallows an
+// element of D that the insertion does not replace (a subfacet that is a face between two
+// conflict tets, a subsegment that is an edge of conflict tets but of no boundary face), or
+// an element the insertion creates in D (a subfacet or subsegment at the new vertex) is
+// not Delaunay in 3D. Either way the element has a vertex of T in its closed diametral or
+// equatorial ball (a triangle or segment whose smallest circumscribing ball is empty of
+// other vertices is a face of the Delaunay tetrahedralization, with the kernel's symbolic
+// perturbation deciding ties): it is encroached, and Fig. 2's remedy applies, Refine(f) or
+// Refine(s), repeated until the pieces are edges and faces of T again (conforming Delaunay
+// refinement by splitting encroached elements; Shewchuk, "Tetrahedral mesh generation by
+// Delaunay refinement", SoCG 1998).
+//
+//   doomed_elements  before a commit: the elements of D the cavity would take out of T;
+//                    a tet circumcenter with any is not inserted, the element is refined
+//                    instead (as if the point encroached it); for the other insertions
+//                    they are recorded as missing after the commit;
+//   missing_at       after a commit: the elements of D at the new vertex that are not
+//                    edges or faces of its star;
+//   reflag           after every missing element is back (or was refused): the inside
+//                    flags of the tets made meanwhile, from the flags of the tets around
+//                    them. While an element of D is missing from T, flags derived across
+//                    faces (refine/volume_mesh.hpp commit_point) can be wrong; they are
+//                    recomputed once T conforms again, by parity across subfacets from
+//                    the tets whose flags predate the break.
+// Elements that stay missing (a guard refused to split them) make the output
+// non-conforming there; the exact checker reports it and pdr mesh exits 3 with the
+// reasons (refine/seq_refinement.hpp unsplit).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "delaunay/cavity.hpp"
+#include "refine/guard.hpp"
+#include "refine/volume_mesh.hpp"
+
+namespace pdr::refine {
+
+// Appends the subfacets and subsegments of D that committing c would remove from T
+// (c built on m.dt's current triangulation, D already updated for this insertion).
+void doomed_elements(const VolumeMesh& m, const Cavity& c, EncroachedLists& out);
+
+// Appends the subfacets and subsegments of D at T vertex v that are not faces or edges of
+// the tets of `star` (v's star in T, every tet holding v).
+void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
+                EncroachedLists& out);
+
+// Recomputes the inside flag of every live finite tet in `made` from its neighbours
+// outside `made` (ghosts are outside), toggling across subfacets; returns the live
+// finite tets of `made`, each once.
+std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made);
+
+}  // namespace pdr::refine
