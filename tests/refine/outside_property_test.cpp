@@ -1,0 +1,169 @@
+// Property (issue #11): for a valid closed domain OUTSIDE the theory (acute and reflex
+// corners, re-entrant edges above 270 degrees, tilted walls from random rotations, thin
+// slabs; tests/support/outside_fixtures.hpp), `pdr mesh` ends without an error in exit 0 or
+// 3, with a mesh that passes every exact check of validity, Delaunay, conformity and
+// volume; only quality.ratio and encroachment.* may fail, and only with exit 3, which then
+// lists why (leftovers, unsplit).
+//
+// Cases: 60 by default (PDR_OUTSIDE_CASES=N for more), from seed 1 (PDR_OUTSIDE_SEED=S or
+// RC_PARAMS=seed=S for others);
+// corners down to 45 degrees (see outside_fixtures.hpp for why not below). A failing case
+// is written to PDR_REFINE_COUNTEREXAMPLE (default refine-counterexample.poly) after every
+// shrinking step (and every case to <that>.running before it runs); keep the shrunk one as tests/regress/outside-<what>.poly, which the
+// replay below runs from then on.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "domain/analysis.hpp"
+#include "io/mesh_io.hpp"
+#include "refine/property_support.hpp"
+#include "support/admissible_fixtures.hpp"
+#include "support/outside_fixtures.hpp"
+
+namespace pdr::refine::test {
+using namespace pdr::test;
+namespace {
+
+constexpr double kMinCorner = 45;
+
+// The suite's cases are fixed (seed 1; PDR_OUTSIDE_SEED=S or RC_PARAMS for others): longer
+// runs with other seeds still find counterexamples (issue #11), which must not make the
+// suite flaky.
+std::uint64_t seed() {
+  const char* env = std::getenv("PDR_OUTSIDE_SEED");
+  return env ? std::strtoull(env, nullptr, 10) : 1;
+}
+
+int cases() {
+  const char* env = std::getenv("PDR_OUTSIDE_CASES");
+  return env ? std::max(1, std::atoi(env)) : 60;
+}
+
+// None, or a volume bound that splits the bounding box into 4 k^3 pieces, k in [1, 12]
+// (meshes of up to some 10^5 tets: fine enough for the refinement to meet the corners).
+rc::Gen<Sizing> gen_fine_sizing(const Plc& plc) {
+  Point lo = plc.points[0], hi = plc.points[0];
+  for (const Point& p : plc.points)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  const double vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  return rc::gen::exec([vol] {
+    Sizing z;
+    const int k = *rc::gen::elementOf(std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12});
+    if (k > 0) z.max_volume = vol / (4.0 * k * k * k);
+    return z;
+  });
+}
+
+// Runs `pdr mesh` in process (no files, check on, B = 2); "" when the run ends as the
+// property says, else why not.
+std::string outside_failure(const Plc& plc, const Sizing& z, bool* admissible = nullptr) {
+  app::MeshArgs args;
+  args.prefix = "unused";
+  args.formats.clear();
+  args.options.ratio = 2.0;
+  args.options.max_volume = z.max_volume;
+  args.options.size = z.size;
+  app::Summary summary;
+  int code = -1;
+  try {
+    code = app::mesh_plc(plc, args, summary);
+  } catch (const std::exception& e) {
+    return std::string("exception: ") + e.what();
+  }
+  const auto j = summary.to_json();
+  if (admissible) *admissible = j.value("admissible", false);
+  std::string why;
+  if (code != 0 && code != 3) why += "exit code " + std::to_string(code) + "; ";
+  if (j.value("tets", 0) == 0) why += "no tets; ";
+  if (j.contains("conformity")) why += "the run says: " + j["conformity"].get<std::string>() + "; ";
+  if (j.contains("check_failed"))
+    for (const auto& c : j["check_failed"]) {
+      const std::string id = c.get<std::string>();
+      const bool allowed = id == "quality.ratio" || id.rfind("encroachment.", 0) == 0;
+      if (!allowed || code != 3) why += "check " + id + " fails; ";
+    }
+  if (!why.empty()) why += "\n" + summary.to_text();
+  return why;
+}
+
+TEST(OutsideProperty, EndsInExit0Or3WithAConformingDelaunayMesh) {
+  check_property("EndsInExit0Or3WithAConformingDelaunayMesh", cases(), [] {
+    const Plc plc = *gen_outside_domain(kMinCorner);
+    const Sizing z = *gen_fine_sizing(plc);
+    // The case is on disk before it runs: a crash or a kill leaves it behind.
+    std::ofstream(counterexample_path() + ".running")
+        << poly_text(plc, "the case OutsideProperty was running\noptions:" + z.options());
+    bool admissible = true;
+    const std::string why = outside_failure(plc, z, &admissible);
+    RC_CLASSIFY(!admissible, "outside the theory");
+    if (why.empty()) return;
+    const std::string path = counterexample_path();
+    std::ofstream(path) << poly_text(
+        plc, "shrunk counterexample of OutsideProperty.EndsInExit0Or3WithAConformingDelaunayMesh\n"
+             "options:" + z.options());
+    RC_LOG() << "options:" << z.options() << "\nwritten to " << path << "\n" << why;
+    RC_FAIL("a domain outside the theory does not end in a conforming Delaunay mesh");
+  }, seed());
+}
+
+// The generator's domains are outside the theory by the domain analysis (else the property
+// tests nothing new).
+TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
+  check_property("GeneratedProfilesHaveCornersOutside90To270", 200, [] {
+    const Plc plc = *gen_outside_domain(kMinCorner);
+    RC_ASSERT(!domain::analyze(plc).report.admissible);
+  });
+  // The tee profile's corners: tips acute, web/underside edges re-entrant above 270.
+  const std::vector<double> a = corner_angles(tee_profile(1, 5, 3, 10, 4.25));
+  ASSERT_EQ(a.size(), 8u);
+  EXPECT_NEAR(a[2], 290.56, 0.01);
+  EXPECT_NEAR(a[3], 69.44, 0.01);
+  EXPECT_NEAR(a[0], 90, 1e-9);
+}
+
+// Replays of tests/regress/outside-*.poly (registered below).
+class Replay : public ::testing::Test {
+ public:
+  explicit Replay(std::string path) : path_(std::move(path)) {}
+  void TestBody() override {
+    const std::string why = outside_failure(io::read_domain(path_), sizing_of_file(path_));
+    EXPECT_TRUE(why.empty()) << path_ << ": " << why;
+  }
+
+ private:
+  std::string path_;
+};
+
+bool register_replays() {
+  const auto dir = std::filesystem::path(PDR_SOURCE_DIR) / "tests" / "regress";
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("outside-", 0) == 0 && e.path().extension() == ".poly") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& p : files) {
+    std::string name = p.stem().string();
+    std::replace(name.begin(), name.end(), '-', '_');
+    ::testing::RegisterTest("OutsideRegress", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [p]() -> ::testing::Test* { return new Replay(p.string()); });
+  }
+  return true;
+}
+
+[[maybe_unused]] const bool kReplaysRegistered = register_replays();
+
+}  // namespace
+}  // namespace pdr::refine::test

@@ -1,0 +1,113 @@
+// Random valid domains outside the theory; see support/outside_fixtures.hpp.
+#include "support/outside_fixtures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <utility>
+
+namespace pdr::test {
+
+std::vector<double> corner_angles(const std::vector<P2d>& p) {
+  std::vector<double> out;
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const P2d& a = p[(i + n - 1) % n];
+    const P2d& b = p[i];
+    const P2d& c = p[(i + 1) % n];
+    const double ux = a[0] - b[0], uy = a[1] - b[1], vx = c[0] - b[0], vy = c[1] - b[1];
+    double turn = std::atan2(ux * vy - uy * vx, ux * vx + uy * vy) * 180 / std::numbers::pi;
+    if (turn < 0) turn += 360;
+    out.push_back(360 - turn);  // interior angle of a counter-clockwise polygon
+  }
+  return out;
+}
+
+std::vector<P2d> tee_profile(double w, double yj, double f, double top, double yt) {
+  return {{-w, 0}, {w, 0}, {w, yj}, {f, yt}, {f, top}, {-f, top}, {-f, yt}, {-w, yj}};
+}
+
+Plc rotated(Plc plc, double a, double b, double c) {
+  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
+               cc = std::cos(c), sc = std::sin(c);
+  for (Point& p : plc.points) {
+    const double x1 = ca * p[0] - sa * p[1], y1 = sa * p[0] + ca * p[1], z1 = p[2];
+    const double x2 = cb * x1 + sb * z1, z2 = -sb * x1 + cb * z1;
+    const double y3 = cc * y1 - sc * z2, z3 = sc * y1 + cc * z2;
+    p = {x2, y3, z3};
+  }
+  return plc;
+}
+
+namespace {
+
+bool corners_within(const std::vector<P2d>& p, double lo) {
+  for (const double a : corner_angles(p))
+    if (a < lo || a > 360 - lo) return false;
+  return true;
+}
+
+// A star-shaped polygon around the origin: corners at sorted angles (gaps below 0.9 pi),
+// radii in [0.3, 1], edges at least 0.1 long, some corner below 90 or above 270 degrees and
+// every corner within the bound. Drawn by rejection from a seeded engine (RapidCheck's
+// draws inside a rejection loop would pile up): shrinking acts on the seed.
+std::vector<P2d> star_polygon(std::uint32_t seed, double min_corner) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> corners(4, 9);
+  std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi), radius(0.3, 1.0);
+  for (;;) {
+    const int n = corners(rng);
+    std::vector<std::pair<double, double>> polar;
+    for (int i = 0; i < n; ++i) polar.emplace_back(angle(rng), radius(rng));
+    std::sort(polar.begin(), polar.end());
+    bool ok = true;
+    for (int i = 0; ok && i < n; ++i) {
+      const double next = i + 1 < n ? polar[i + 1].first : polar[0].first + 2 * std::numbers::pi;
+      const double gap = next - polar[i].first;
+      ok = gap > 0.05 && gap < 0.9 * std::numbers::pi;
+    }
+    if (!ok) continue;
+    std::vector<P2d> p;
+    for (const auto& [t, r] : polar) p.push_back({r * std::cos(t), r * std::sin(t)});
+    const std::vector<double> c = corner_angles(p);
+    ok = corners_within(p, min_corner) &&
+         std::any_of(c.begin(), c.end(), [](double x) { return x < 90 || x > 270; });
+    for (int i = 0; ok && i < n; ++i)
+      ok = std::hypot(p[i][0] - p[(i + 1) % n][0], p[i][1] - p[(i + 1) % n][1]) > 0.1;
+    if (ok) return p;
+  }
+}
+
+// A tee whose tips are at least min_corner (the re-entrant edges then at most 360 minus it).
+rc::Gen<std::vector<P2d>> gen_tee(double min_corner) {
+  return rc::gen::exec([min_corner] {
+    const double w = 0.5 + *rc::gen::inRange(0, 11) / 10.0;
+    const double yj = 3 + *rc::gen::inRange(0, 31) / 10.0;
+    const double f = w + 1 + *rc::gen::inRange(0, 21) / 10.0;
+    const double top = yj + 2 + *rc::gen::inRange(0, 41) / 10.0;
+    // The tip angle is atan((f - w) / drop): drop <= (f - w) / tan(min_corner).
+    const double max_drop = (f - w) / std::tan(min_corner * std::numbers::pi / 180);
+    const double drop = max_drop * (0.1 + *rc::gen::inRange(0, 91) / 100.0);
+    return tee_profile(w, yj, f, top, yj - drop);
+  });
+}
+
+}  // namespace
+
+rc::Gen<Plc> gen_outside_domain(double min_corner_deg) {
+  return rc::gen::exec([min_corner_deg] {
+    const bool tee = *rc::gen::inRange(0, 3) == 0;
+    const std::vector<P2d> profile = tee ? *gen_tee(min_corner_deg) : star_polygon(static_cast<std::uint32_t>(*rc::gen::inRange(0, 1 << 30)), min_corner_deg);
+    const double height = tee ? 5 + *rc::gen::inRange(0, 21) : 0.2 + *rc::gen::inRange(0, 29) / 10.0;
+    Plc plc = prism(profile, 0, height);
+    if (*rc::gen::inRange(0, 2) == 1) {
+      const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
+      const double a = angle(), b = angle(), c = angle();
+      plc = rotated(std::move(plc), a, b, c);
+    }
+    return plc;
+  });
+}
+
+}  // namespace pdr::test

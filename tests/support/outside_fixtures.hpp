@@ -1,0 +1,40 @@
+// Random valid domains OUTSIDE the theory (related components meeting below 90 or above 270
+// degrees), for the property of issue #11: `pdr mesh` ends in exit 0 or 3 with a valid,
+// Delaunay, conforming mesh, whatever the angles.
+//
+// Families (each optionally turned by a random rotation, coordinates rounded, so the walls
+// are tilted and planar only within the reader's tolerance):
+//   - star prisms: a star-shaped polygon of 4..9 corners at random angles and radii,
+//     extruded along z by a random height (thin slabs included): acute and reflex corners;
+//   - tees after the paper's Fig. 8(b): a web and a flange whose undersides taper down from
+//     the web to the tips, so the web/underside edges are re-entrant above 270 degrees and
+//     the tips acute, extruded along z.
+// min_corner_deg bounds the corners of the profiles from below (and reflex ones from above
+// by 360 - min_corner_deg): the guards of refine/seq_refinement.hpp keep the mesh
+// conforming down to about 45 degrees; below that a protected length can refuse to restore
+// an element of D (issue #11, reported as exit 3 with "conformity").
+// Shrinking moves the corners, heights and rotations towards simpler values.
+#pragma once
+
+#include <rapidcheck.h>
+
+#include <vector>
+
+#include "mesh/plc.hpp"
+#include "support/plc_fixtures.hpp"
+
+namespace pdr::test {
+
+// The interior angles (degrees) of a simple counter-clockwise polygon.
+std::vector<double> corner_angles(const std::vector<P2d>& polygon);
+
+// A tee profile: web half-width w, web height yj, flange half-width f > w, top y = top,
+// tips dropping to yt < yj (re-entrant edges above 270 degrees).
+std::vector<P2d> tee_profile(double w, double yj, double f, double top, double yt);
+
+// p turned by the rotation with Euler angles (a, b, c) (radians), rounded to doubles.
+Plc rotated(Plc plc, double a, double b, double c);
+
+rc::Gen<Plc> gen_outside_domain(double min_corner_deg);
+
+}  // namespace pdr::test
