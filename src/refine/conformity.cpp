@@ -125,4 +125,58 @@ std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
   return live;
 }
 
+void ConformityTracker::start(const VolumeMesh& m) {
+  if (m.missing_subfacets.empty() && m.missing_subsegments.empty()) return;
+  for (const std::uint32_t id : m.missing_subsegments) add_subsegment(m, id, missing_);
+  for (const std::uint32_t id : m.missing_subfacets) add_subfacet(m, id, missing_);
+  const TetStore& s = m.dt.store();
+  for (TetId t = 0; t < s.slots(); ++t)
+    if (s.is_alive(t)) dirty_.push_back(t);
+}
+
+const EncroachedLists& ConformityTracker::doomed(const VolumeMesh& m, const Cavity& c) {
+  doomed_.subsegments.clear();
+  doomed_.subfacets.clear();
+  doomed_elements(m, c, doomed_);
+  return doomed_;
+}
+
+bool ConformityTracker::committed(const VolumeMesh& m, VertexId v, std::span<const TetId> star) {
+  const std::size_t had = missing_.subsegments.size() + missing_.subfacets.size();
+  for (const Encroached& e : doomed_.subsegments) add_subsegment(m, e.id, missing_);
+  for (const Encroached& e : doomed_.subfacets) add_subfacet(m, e.id, missing_);
+  missing_at(m, v, star, missing_);
+  const bool fresh = missing_.subsegments.size() + missing_.subfacets.size() > had;
+  if (fresh || broken()) dirty_.insert(dirty_.end(), star.begin(), star.end());
+  return fresh;
+}
+
+std::optional<ConformityTracker::Next> ConformityTracker::next(const SurfaceMesh& s) {
+  while (!missing_.subsegments.empty() || !missing_.subfacets.empty()) {
+    const bool seg = !missing_.subsegments.empty();
+    std::vector<Encroached>& list = seg ? missing_.subsegments : missing_.subfacets;
+    const Encroached e = list.back();
+    list.pop_back();
+    if (seg ? still_subsegment(s, e) : still_subfacet(s, e)) return Next{seg, e};
+  }
+  return std::nullopt;
+}
+
+void ConformityTracker::wait_again(const Next& n) {
+  (n.subsegment ? missing_.subsegments : missing_.subfacets).push_back(n.e);
+}
+
+std::vector<TetId> ConformityTracker::restore(VolumeMesh& m) {
+  std::vector<TetId> made = reflag(m, dirty_);
+  dirty_.clear();
+  return made;
+}
+
+std::vector<ConformityTracker::Next> ConformityTracker::abandon(VolumeMesh& m) {
+  std::vector<Next> left;
+  while (const auto n = next(m.surf)) left.push_back(*n);
+  if (broken()) restore(m);
+  return left;
+}
+
 }  // namespace pdr::refine

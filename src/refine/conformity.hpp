@@ -31,6 +31,7 @@
 // reasons (refine/seq_refinement.hpp unsplit).
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -53,5 +54,35 @@ void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
 // outside `made` (ghosts are outside), toggling across subfacets; returns the live
 // finite tets of `made`, each once.
 std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made);
+
+// SeqRefinement's bookkeeping of the above: the elements of D missing from T and the tets
+// made while any is (T conforms iff none is dirty).
+class ConformityTracker {
+ public:
+  // T_o's missing elements (VolumeMesh::missing_*): every tet becomes dirty.
+  void start(const VolumeMesh& m);
+  // The elements committing c would take out of T (filled anew; the buffers are reused).
+  const EncroachedLists& doomed(const VolumeMesh& m, const Cavity& c);
+  // After the commit of vertex v with `star`: the last doomed() elements and missing_at
+  // join the missing ones, and the star is dirty while any is. True when new elements
+  // went missing.
+  bool committed(const VolumeMesh& m, VertexId v, std::span<const TetId> star);
+  // The next missing element D still holds (subsegments first); nullopt when none.
+  struct Next {
+    bool subsegment;
+    Encroached e;
+  };
+  std::optional<Next> next(const SurfaceMesh& s);
+  void wait_again(const Next& n);  // refined, but still missing (Refine(f) split a segment)
+  bool broken() const { return !dirty_.empty(); }
+  // Once nothing is missing: reflags the dirty tets and returns the live ones.
+  std::vector<TetId> restore(VolumeMesh& m);
+  // The budget ended: the elements still missing (each still in D); flags reflagged.
+  std::vector<Next> abandon(VolumeMesh& m);
+
+ private:
+  EncroachedLists missing_, doomed_;
+  std::vector<TetId> dirty_;
+};
 
 }  // namespace pdr::refine

@@ -44,7 +44,10 @@ class Refiner {
     res_.stats.h = std::numeric_limits<double>::infinity();
     const TetStore& s = m_.dt.store();
     if (!o_.admissible) start_guards();
-    start_missing();
+    if (!m_.missing_subfacets.empty() || !m_.missing_subsegments.empty()) {
+      ++res_.stats.conformity_breaks;  // T_o (refine/initial.hpp)
+      conformity_.start(m_);
+    }
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
     for (;;) {
@@ -87,11 +90,7 @@ class Refiner {
   RefusedTets refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
-  // Conformity (refine/conformity.hpp): elements of D missing from T, the tets made while
-  // any is, and the doomed elements of the cavity being committed.
-  EncroachedLists missing_, doomed_;
-  std::vector<TetId> dirty_;
-  bool broken_ = false;
+  ConformityTracker conformity_;  // refine/conformity.hpp
 
   const Point& pt(VertexId v) const { return m_.dt.point(v); }
 
@@ -127,69 +126,45 @@ class Refiner {
   // (Refine(s), then Refine(f)); once none is, recomputes the flags of the tets made
   // meanwhile. nullopt when nothing was missing; false when the budget is spent.
   std::optional<bool> restore_missing() {
-    while (!missing_.subsegments.empty() || !missing_.subfacets.empty()) {
-      const bool seg = !missing_.subsegments.empty();
-      std::vector<Encroached>& list = seg ? missing_.subsegments : missing_.subfacets;
-      const Encroached e = list.back();
-      list.pop_back();
-      if (seg ? !still_subsegment(m_.surf, e) : !still_subfacet(m_.surf, e)) continue;
+    if (const auto n = conformity_.next(m_.surf)) {
       if (at_cap()) {
-        list.push_back(e);
+        conformity_.wait_again(*n);
         return false;
       }
       ++res_.stats.conformity_splits;
       const std::size_t before = m_.dt.num_points();
-      if (seg) {
-        if (auto why = split(e.id, kNoTet)) unsplit(std::move(*why));
+      if (n->subsegment) {
+        if (auto why = split(n->e.id, kNoTet)) unsplit(std::move(*why));
       } else {
-        refine_subfacet(e.id, kNoTet, kNoTet);
+        refine_subfacet(n->e.id, kNoTet, kNoTet);
       }
-      if (m_.dt.num_points() == before) ++res_.stats.conformity_refused;
-      // Refine(f) may have split a subsegment instead: the subfacet waits again.
-      if (m_.dt.num_points() > before && !seg && still_subfacet(m_.surf, e))
-        missing_.subfacets.push_back(e);
+      if (m_.dt.num_points() == before)
+        ++res_.stats.conformity_refused;
+      else if (!n->subsegment && still_subfacet(m_.surf, n->e))
+        conformity_.wait_again(*n);  // Refine(f) split a subsegment instead
       return true;
     }
-    if (!broken_) return std::nullopt;
-    broken_ = false;
-    const std::vector<TetId> made = reflag(m_, dirty_);
-    dirty_.clear();
-    for (const TetId t : made)
+    if (!conformity_.broken()) return std::nullopt;
+    for (const TetId t : conformity_.restore(m_))
       if (m_.is_inside(t)) consider(t);
     return true;
   }
 
-  // The budget ended with elements of D missing from T: each is listed, the flags are
-  // made as consistent as T allows.
+  // The budget ended with elements of D missing from T: each is listed.
   void abandon_missing() {
-    for (const auto* list : {&missing_.subsegments, &missing_.subfacets})
-      for (const Encroached& e : *list) {
-        const bool seg = list == &missing_.subsegments;
-        if (seg ? still_subsegment(m_.surf, e) : still_subfacet(m_.surf, e))
-        {
-          ++res_.stats.conformity_refused;
-          unsplit(std::string("volume.conformity: ") + (seg ? "subsegment " : "subfacet ") +
-                  std::to_string(e.id) + " is not in T (" + res_.stop_reason + ")");
-        }
-      }
-    missing_ = {};
-    if (broken_) reflag(m_, dirty_);
-    broken_ = false;
-    dirty_.clear();
+    for (const auto& n : conformity_.abandon(m_)) {
+      ++res_.stats.conformity_refused;
+      unsplit(std::string("volume.conformity: ") + (n.subsegment ? "subsegment " : "subfacet ") +
+              std::to_string(n.e.id) + " is not in T (" + res_.stop_reason + ")");
+    }
   }
 
   // Commits cavity c (p becomes D's vertex sv, kNone: off ∂Ω) and records the elements of
-  // D that are not in T afterwards.
-  VertexId insert(const Cavity& c, std::uint32_t sv) {
-    doomed_ = {};
-    doomed_elements(m_, c, doomed_);
+  // D that are not in T afterwards; `doomed_known`: conformity_.doomed(c) was just taken.
+  VertexId insert(const Cavity& c, std::uint32_t sv, bool doomed_known = false) {
+    if (!doomed_known) conformity_.doomed(m_, c);
     const VertexId v = commit_point(m_, c, sv, star_);
-    const std::size_t had = missing_.subsegments.size() + missing_.subfacets.size();
-    for (const Encroached& e : doomed_.subsegments) missing_.subsegments.push_back(e);
-    for (const Encroached& e : doomed_.subfacets) missing_.subfacets.push_back(e);
-    missing_at(m_, v, star_, missing_);
-    const bool fresh = missing_.subsegments.size() + missing_.subfacets.size() > had;
-    if (fresh) {
+    if (conformity_.committed(m_, v, star_)) {
       ++res_.stats.conformity_breaks;
       if (o_.audit)
         audited([&] {
@@ -197,28 +172,7 @@ class Refiner {
                             ", an element of D at it or in its cavity is not in T");
         });
     }
-    if (fresh || broken_) {
-      broken_ = true;
-      dirty_.insert(dirty_.end(), star_.begin(), star_.end());
-    }
     return v;
-  }
-
-  // The elements of D that T_o lacks (refine/initial.hpp): restored before anything else,
-  // every tet's flag recomputed after.
-  void start_missing() {
-    if (m_.missing_subfacets.empty() && m_.missing_subsegments.empty()) return;
-    ++res_.stats.conformity_breaks;
-    for (const std::uint32_t id : m_.missing_subsegments) {
-      const Subsegment& x = m_.surf.subsegment(id);
-      missing_.subsegments.push_back({id, {x.v[0], x.v[1], 0}, kNone, kNoTet});
-    }
-    for (const std::uint32_t id : m_.missing_subfacets)
-      missing_.subfacets.push_back({id, m_.surf.subfacet(id).v, kNone, kNoTet});
-    broken_ = true;
-    const TetStore& s = m_.dt.store();
-    for (TetId t = 0; t < s.slots(); ++t)
-      if (s.is_alive(t)) dirty_.push_back(t);
   }
 
   // Inadmissible domains: shells and protected lengths at the acute vertices (every input
@@ -451,14 +405,13 @@ class Refiner {
     }
     // An element of D the cavity would take out of T is refined first, as if p encroached
     // it (refine/conformity.hpp).
-    doomed_ = {};
-    doomed_elements(m_, cav_, doomed_);
-    if (!doomed_.subsegments.empty()) {
-      if (auto why = split(doomed_.subsegments.front().id, t)) refuse(t, std::move(*why));
+    const EncroachedLists& doomed = conformity_.doomed(m_, cav_);
+    if (!doomed.subsegments.empty()) {
+      if (auto why = split(doomed.subsegments.front().id, t)) refuse(t, std::move(*why));
       return;
     }
-    if (!doomed_.subfacets.empty()) {
-      refine_subfacet(doomed_.subfacets.front().id, t, t);
+    if (!doomed.subfacets.empty()) {
+      refine_subfacet(doomed.subfacets.front().id, t, t);
       return;
     }
     if (outside) {
@@ -469,7 +422,7 @@ class Refiner {
     }
     const double r2 = construct::circumradius2(a, b, c, d);
     res_.stats.h = std::min(res_.stats.h, std::sqrt(r2) / 2);
-    const VertexId nv = insert(cav_, kNone);
+    const VertexId nv = insert(cav_, kNone, true);
     ++res_.stats.tet_circumcenters;
     after_insert(nv, "tet", r2);
   }

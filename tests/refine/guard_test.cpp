@@ -111,7 +111,7 @@ TEST(RefineGuard, PaperTeeRecoversConformity) {
     EXPECT_TRUE(r.rr.stop_reason.empty()) << r.rr.stop_reason;
     EXPECT_TRUE(r.rr.unsplit.empty()) << r.rr.unsplit.front();
     EXPECT_TRUE(r.report.ok()) << check::to_text(r.report);
-    EXPECT_GE(r.rr.stats.conformity_splits, r.rr.stats.conformity_breaks);
+    EXPECT_EQ(r.rr.stats.conformity_refused, 0u);  // every missing element came back
     breaks += r.rr.stats.conformity_breaks;
   }
   EXPECT_GT(breaks, 0u);
