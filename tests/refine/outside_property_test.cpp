@@ -51,13 +51,8 @@ int cases() {
 // None, or a volume bound that splits the bounding box into 4 k^3 pieces, k in [1, 12]
 // (meshes of up to some 10^5 tets: fine enough for the refinement to meet the corners).
 rc::Gen<Sizing> gen_fine_sizing(const Plc& plc) {
-  Point lo = plc.points[0], hi = plc.points[0];
-  for (const Point& p : plc.points)
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], p[a]);
-      hi[a] = std::max(hi[a], p[a]);
-    }
-  const double vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  const Point e = box_extent(plc);
+  const double vol = e[0] * e[1] * e[2];
   return rc::gen::exec([vol] {
     Sizing z;
     const int k = *rc::gen::elementOf(std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12});
@@ -133,42 +128,14 @@ TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
   EXPECT_NEAR(a[0], 90, 1e-9);
 }
 
-// Replays of tests/regress/outside-*.poly (registered below). A case of a known open bug is
-// registered DISABLED_ (gtest lists it) with the bug named in its file.
+// Replays of tests/regress/outside-*.poly, one test each; a known open bug is registered
+// DISABLED_ with the bug named in its file.
 const std::vector<std::string> kKnownBugs = {"outside-rotated-tee-facets-uncovered.poly"};
 
-class Replay : public ::testing::Test {
- public:
-  explicit Replay(std::string path) : path_(std::move(path)) {}
-  void TestBody() override {
-    const std::string why = outside_failure(io::read_domain(path_), sizing_of_file(path_));
-    EXPECT_TRUE(why.empty()) << path_ << ": " << why;
-  }
-
- private:
-  std::string path_;
-};
-
-bool register_replays() {
-  const auto dir = std::filesystem::path(PDR_SOURCE_DIR) / "tests" / "regress";
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("outside-", 0) == 0 && e.path().extension() == ".poly") files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  for (const auto& p : files) {
-    std::string name = p.stem().string();
-    if (std::find(kKnownBugs.begin(), kKnownBugs.end(), p.filename().string()) != kKnownBugs.end())
-      name = "DISABLED_" + name;
-    std::replace(name.begin(), name.end(), '-', '_');
-    ::testing::RegisterTest("OutsideRegress", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
-                            [p]() -> ::testing::Test* { return new Replay(p.string()); });
-  }
-  return true;
-}
-
-[[maybe_unused]] const bool kReplaysRegistered = register_replays();
+[[maybe_unused]] const bool kReplaysRegistered =
+    register_replays("OutsideRegress", "outside-", kKnownBugs, [](const std::string& path) {
+      return outside_failure(io::read_domain(path), sizing_of_file(path));
+    });
 
 }  // namespace
 }  // namespace pdr::refine::test

@@ -10,11 +10,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "mesh/plc.hpp"
 
@@ -53,15 +55,20 @@ inline Sizing sizing_of_file(const std::string& path) {
 
 // None, or a volume or circumradius bound that splits the bounding box into a few to a
 // few hundred pieces.
-inline rc::Gen<Sizing> gen_sizing(const Plc& plc) {
+// The extent of the PLC's bounding box per axis.
+inline Point box_extent(const Plc& plc) {
   Point lo = plc.points[0], hi = plc.points[0];
   for (const Point& p : plc.points)
     for (int a = 0; a < 3; ++a) {
       lo[a] = std::min(lo[a], p[a]);
       hi[a] = std::max(hi[a], p[a]);
     }
-  const double vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-  const double diag = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+}
+
+inline rc::Gen<Sizing> gen_sizing(const Plc& plc) {
+  const Point e = box_extent(plc);
+  const double vol = e[0] * e[1] * e[2], diag = std::hypot(e[0], e[1], e[2]);
   return rc::gen::exec([vol, diag] {
     Sizing z;
     const int kind = *rc::gen::inRange(0, 3), k = *rc::gen::inRange(1, 5);
@@ -93,6 +100,44 @@ void check_property(const std::string& name, int n, F property,
     rc::detail::printResultMessage(result, s);
     ADD_FAILURE() << s.str();
   }
+}
+
+// Registers one gtest per file `prefix`*.poly of tests/regress in suite `suite`, each
+// running `failure(path)` ("" when it passes); a file listed in known_bugs is registered
+// DISABLED_ (gtest lists it) with the bug named in the file.
+template <class Failure>
+bool register_replays(const char* suite, const std::string& prefix,
+                      const std::vector<std::string>& known_bugs, Failure failure) {
+  class Replay : public ::testing::Test {
+   public:
+    Replay(std::string path, Failure f) : path_(std::move(path)), f_(f) {}
+    void TestBody() override {
+      const std::string why = f_(path_);
+      EXPECT_TRUE(why.empty()) << path_ << ": " << why;
+    }
+
+   private:
+    std::string path_;
+    Failure f_;
+  };
+  const auto dir = std::filesystem::path(PDR_SOURCE_DIR) / "tests" / "regress";
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) == 0 && e.path().extension() == ".poly") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& p : files) {
+    std::string name = p.stem().string();
+    if (std::find(known_bugs.begin(), known_bugs.end(), p.filename().string()) != known_bugs.end())
+      name = "DISABLED_" + name;
+    std::replace(name.begin(), name.end(), '-', '_');
+    ::testing::RegisterTest(suite, name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [p, failure]() -> ::testing::Test* {
+                              return new Replay(p.string(), failure);
+                            });
+  }
+  return true;
 }
 
 }  // namespace pdr::refine::test

@@ -119,43 +119,14 @@ TEST(RefineProperty, MeshPassesEveryCheck) {
   });
 }
 
-// Replays of tests/regress/refine-*.poly, one test each (registered below). A case of a
-// known open bug is registered DISABLED_ (gtest lists it) with the bug named here.
+// Replays of tests/regress/refine-*.poly, one test each. A case of a known open bug is
+// registered DISABLED_ (gtest lists it) with the bug named here.
 const std::vector<std::string> kKnownBugs = {};
 
-class Replay : public ::testing::Test {
- public:
-  explicit Replay(std::string path) : path_(std::move(path)) {}
-  void TestBody() override {
-    const Plc plc = io::read_domain(path_);
-    const std::string why = mesh_failure(plc, sizing_of_file(path_));
-    EXPECT_TRUE(why.empty()) << path_ << ": " << why;
-  }
-
- private:
-  std::string path_;
-};
-
-bool register_replays() {
-  const auto dir = std::filesystem::path(PDR_SOURCE_DIR) / "tests" / "regress";
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("refine-", 0) == 0 && e.path().extension() == ".poly") files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  for (const auto& p : files) {
-    std::string name = p.stem().string();
-    if (std::find(kKnownBugs.begin(), kKnownBugs.end(), p.filename().string()) != kKnownBugs.end())
-      name = "DISABLED_" + name;
-    std::replace(name.begin(), name.end(), '-', '_');
-    ::testing::RegisterTest("RefineRegress", name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
-                            [p]() -> ::testing::Test* { return new Replay(p.string()); });
-  }
-  return true;
-}
-
-[[maybe_unused]] const bool kReplaysRegistered = register_replays();
+[[maybe_unused]] const bool kReplaysRegistered =
+    register_replays("RefineRegress", "refine-", kKnownBugs, [](const std::string& path) {
+      return mesh_failure(io::read_domain(path), sizing_of_file(path));
+    });
 
 }  // namespace
 }  // namespace pdr::refine::test
