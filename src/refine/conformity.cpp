@@ -92,17 +92,19 @@ std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
     if (t < s.slots() && s.is_alive(t) && !s.is_ghost(t)) live.push_back(t);
   std::sort(live.begin(), live.end());
   live.erase(std::unique(live.begin(), live.end()), live.end());
-  auto in_made = [&](TetId t) { return std::binary_search(live.begin(), live.end(), t); };
-  std::vector<std::uint8_t> done(live.size(), 0);
+  // The index of t in `live`, or live.size() when t is not there.
   auto index = [&](TetId t) {
-    return static_cast<std::size_t>(std::lower_bound(live.begin(), live.end(), t) - live.begin());
+    const auto it = std::lower_bound(live.begin(), live.end(), t);
+    return static_cast<std::size_t>(it != live.end() && *it == t ? it - live.begin()
+                                                                  : live.end() - live.begin());
   };
+  std::vector<std::uint8_t> done(live.size(), 0);
   std::vector<TetId> queue;
   // Seeds: tets with a neighbour whose flag predates the break.
   for (std::size_t i = 0; i < live.size(); ++i)
     for (int f = 0; f < 4; ++f) {
       const TetId n = s.neighbour(live[i], f);
-      if (!s.is_ghost(n) && in_made(n)) continue;
+      if (!s.is_ghost(n) && index(n) < live.size()) continue;
       const bool across = m.face_subfacet(live[i], f).has_value();
       m.inside[live[i]] = static_cast<std::uint8_t>((s.is_ghost(n) ? 0 : m.inside[n]) ^ across);
       done[i] = 1;
@@ -113,9 +115,9 @@ std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
     const TetId t = queue[q];
     for (int f = 0; f < 4; ++f) {
       const TetId n = s.neighbour(t, f);
-      if (s.is_ghost(n) || !in_made(n)) continue;
+      if (s.is_ghost(n)) continue;
       const std::size_t j = index(n);
-      if (done[j]) continue;
+      if (j == live.size() || done[j]) continue;
       const bool across = m.face_subfacet(t, f).has_value();
       m.inside[n] = static_cast<std::uint8_t>(m.inside[t] ^ across);
       done[j] = 1;
@@ -127,8 +129,13 @@ std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
 
 void ConformityTracker::start(const VolumeMesh& m) {
   if (m.missing_subfacets.empty() && m.missing_subsegments.empty()) return;
-  for (const std::uint32_t id : m.missing_subsegments) add_subsegment(m, id, missing_);
-  for (const std::uint32_t id : m.missing_subfacets) add_subfacet(m, id, missing_);
+  // Each listed once by build_initial: no duplicate test needed.
+  for (const std::uint32_t id : m.missing_subsegments) {
+    const Subsegment& x = m.surf.subsegment(id);
+    missing_.subsegments.push_back({id, {x.v[0], x.v[1], 0}, kNone, kNoTet});
+  }
+  for (const std::uint32_t id : m.missing_subfacets)
+    missing_.subfacets.push_back({id, m.surf.subfacet(id).v, kNone, kNoTet});
   const TetStore& s = m.dt.store();
   for (TetId t = 0; t < s.slots(); ++t)
     if (s.is_alive(t)) dirty_.push_back(t);
