@@ -9,7 +9,7 @@
 #                                       the check to find it
 set -euo pipefail
 
-order=(geom mesh io delaunay check domain surface refine app)
+order=(geom mesh io delaunay check domain surface refine par app)
 declare -A below=(
   [geom]=""
   [mesh]="geom"
@@ -19,7 +19,8 @@ declare -A below=(
   [domain]="geom mesh io"
   [surface]="geom mesh io domain"
   [refine]="geom mesh io delaunay domain surface"
-  [app]="geom mesh io delaunay check domain surface refine"
+  [par]="geom mesh io delaunay check domain surface refine"
+  [app]="geom mesh io delaunay check domain surface refine par"
 )
 
 rank_of() {

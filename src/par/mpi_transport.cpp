@@ -1,0 +1,115 @@
+// MpiTransport and MpiSession: par/mpi_transport.hpp.
+#include "par/mpi_transport.hpp"
+
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pdr::par {
+namespace {
+
+constexpr int kTag = 1;
+
+void check(int rc, const char* what) {
+  if (rc == MPI_SUCCESS) return;
+  char text[MPI_MAX_ERROR_STRING];
+  int len = 0;
+  MPI_Error_string(rc, text, &len);
+  throw std::runtime_error(std::string("mpi: ") + what + ": " + std::string(text, static_cast<std::size_t>(len)));
+}
+
+}  // namespace
+
+MpiSession::MpiSession(int* argc, char*** argv) {
+  int provided = 0;
+  check(MPI_Init_thread(argc, argv, MPI_THREAD_SINGLE, &provided), "MPI_Init_thread");
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() { MPI_Finalize(); }
+
+bool launched_by_mpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE",
+                        "MPI_LOCALNRANKS", "SLURM_STEP_NUM_TASKS"})
+    if (std::getenv(v) != nullptr) return true;
+  return false;
+}
+
+MpiTransport::MpiTransport() {
+  check(MPI_Comm_dup(MPI_COMM_WORLD, &messages_), "MPI_Comm_dup");
+  check(MPI_Comm_dup(MPI_COMM_WORLD, &reductions_), "MPI_Comm_dup");
+  MPI_Comm_set_errhandler(messages_, MPI_ERRORS_RETURN);
+  MPI_Comm_set_errhandler(reductions_, MPI_ERRORS_RETURN);
+  MPI_Comm_rank(messages_, &rank_);
+  MPI_Comm_size(messages_, &size_);
+}
+
+MpiTransport::~MpiTransport() {
+  for (Outgoing& o : sending_) MPI_Wait(&o.request, MPI_STATUS_IGNORE);
+  if (reduction_ != MPI_REQUEST_NULL) MPI_Wait(&reduction_, MPI_STATUS_IGNORE);
+  MPI_Comm_free(&messages_);
+  MPI_Comm_free(&reductions_);
+}
+
+void MpiTransport::do_send(int to, Bytes message) {
+  if (message.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::length_error("mpi: a message of " + std::to_string(message.size()) +
+                            " bytes exceeds MPI's int count");
+  Outgoing& o = sending_.emplace_back();
+  o.bytes = std::move(message);
+  check(MPI_Isend(o.bytes.data(), static_cast<int>(o.bytes.size()), MPI_BYTE, to, kTag,
+                  messages_, &o.request),
+        "MPI_Isend");
+  reap();
+}
+
+void MpiTransport::reap() {
+  while (!sending_.empty()) {
+    int done = 0;
+    check(MPI_Test(&sending_.front().request, &done, MPI_STATUS_IGNORE), "MPI_Test");
+    if (!done) break;
+    sending_.pop_front();
+  }
+}
+
+std::size_t MpiTransport::do_poll(const Deliver& deliver, std::size_t max) {
+  reap();
+  std::size_t n = 0;
+  while (n < max) {
+    int found = 0;
+    MPI_Message msg;
+    MPI_Status status;
+    check(MPI_Improbe(MPI_ANY_SOURCE, kTag, messages_, &found, &msg, &status), "MPI_Improbe");
+    if (!found) break;
+    int count = 0;
+    MPI_Get_count(&status, MPI_BYTE, &count);
+    incoming_.resize(static_cast<std::size_t>(count));
+    check(MPI_Mrecv(incoming_.data(), count, MPI_BYTE, &msg, MPI_STATUS_IGNORE), "MPI_Mrecv");
+    deliver(status.MPI_SOURCE, incoming_);
+    ++n;
+  }
+  return n;
+}
+
+void MpiTransport::start_reduction(const Reduction& mine) {
+  if (reduction_ != MPI_REQUEST_NULL)
+    throw std::logic_error("mpi: a reduction round is already open on this rank");
+  mine_ = mine;
+  check(MPI_Iallreduce(mine_.data(), sum_.data(), static_cast<int>(mine_.size()),
+                       MPI_UINT64_T, MPI_SUM, reductions_, &reduction_),
+        "MPI_Iallreduce");
+}
+
+std::optional<Reduction> MpiTransport::reduction_done() {
+  if (reduction_ == MPI_REQUEST_NULL) return std::nullopt;
+  int done = 0;
+  check(MPI_Test(&reduction_, &done, MPI_STATUS_IGNORE), "MPI_Test");
+  if (!done) return std::nullopt;
+  return sum_;
+}
+
+}  // namespace pdr::par

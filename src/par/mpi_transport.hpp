@@ -1,0 +1,70 @@
+// MpiTransport: the Transport of par/transport.hpp over Open MPI, plus the MPI session.
+//
+// Messages: MPI_Isend of the bytes on a private duplicate of MPI_COMM_WORLD, one tag, so
+// MPI's non-overtaking rule gives FIFO per pair; poll() receives with MPI_Improbe +
+// MPI_Mrecv (any size, no pre-posted buffers); a send's buffer is kept until MPI_Testsome
+// reports it complete. Nothing blocks: a blocking send of a large message could deadlock
+// against a peer doing the same.
+// Reductions: MPI_Iallreduce (sum) on a second duplicate, so they never meet messages.
+// Teardown waits for the outstanding sends (every message was received by then: the
+// caller tears down only after termination detection).
+#pragma once
+
+#include <mpi.h>
+
+#include <deque>
+
+#include "par/transport.hpp"
+
+namespace pdr::par {
+
+// MPI_Init / MPI_Finalize around a scope (MPI_THREAD_SINGLE: one thread per rank).
+class MpiSession {
+ public:
+  MpiSession(int* argc, char*** argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+// True when this process was started by an MPI launcher (mpirun, mpiexec, srun): the
+// launchers' environment variables are set.
+bool launched_by_mpi();
+
+class MpiTransport final : public Transport {
+ public:
+  MpiTransport();  // precondition: MPI is initialised
+  ~MpiTransport() override;
+  MpiTransport(const MpiTransport&) = delete;
+  MpiTransport& operator=(const MpiTransport&) = delete;
+
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  void start_reduction(const Reduction& mine) override;
+  std::optional<Reduction> reduction_done() override;
+
+  std::size_t sends_in_progress() const { return sending_.size(); }
+
+ private:
+  struct Outgoing {
+    Bytes bytes;
+    MPI_Request request = MPI_REQUEST_NULL;
+  };
+  void do_send(int to, Bytes message) override;
+  std::size_t do_poll(const Deliver& deliver, std::size_t max) override;
+  void reap();  // frees the buffers of completed sends
+
+  MPI_Comm messages_ = MPI_COMM_NULL, reductions_ = MPI_COMM_NULL;
+  int rank_ = 0, size_ = 1;
+  std::deque<Outgoing> sending_;
+  Bytes incoming_;
+  Reduction mine_{}, sum_{};
+  MPI_Request reduction_ = MPI_REQUEST_NULL;
+};
+
+}  // namespace pdr::par
