@@ -6,6 +6,9 @@
 //                                    (tet_store.hpp). p conflicts when it is strictly
 //                                    outside, orient3d(a,b,c,p) > 0, or on the face's
 //                                    plane and incircle3_sos(a,b,c,p) == Positive.
+//   proxy tet (a,b,c,remote):        never (mesh/tet_store.hpp: the tet behind the face
+//                                    lives in another submesh; the cavity search lists
+//                                    it in the ring, and the parallel layer fetches it).
 // A ghost tet is the limit of a finite tet whose fourth vertex runs to infinity beyond the
 // hull face, so its "circumsphere" is the open half-space outside the face plus, on the
 // plane itself, the open circumdisk of the face. Because incircle3_sos is insphere_sos
@@ -30,7 +33,8 @@ namespace pdr {
 inline bool in_conflict(const TetStore& s, std::span<const Point> pts, TetId t,
                         const Point& p) {
   const VertexId* v = s.vertices(t);
-  if (v[3] == kGhostVertex) {
+  if (v[3] >= kFirstSpecialVertex) [[unlikely]] {
+    if (v[3] != kGhostVertex) return false;  // a proxy
     const Filtered quick = semistatic::orient3d(pts[v[0]].data(), pts[v[1]].data(),
                                                 pts[v[2]].data(), p.data());
     if (quick == Filtered::Positive) return true;

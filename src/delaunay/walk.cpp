@@ -60,8 +60,8 @@ Location locate(const TetStore& s, std::span<const Point> pts, const Point& p, T
     t = tet_of(h);
     entered = face_of(h);
     ++steps;
-    if (s.is_ghost(t)) {
-      out.kind = Location::Kind::OutsideHull;
+    if (s.vertex(t, 3) >= kFirstSpecialVertex) [[unlikely]] {
+      out.kind = s.is_ghost(t) ? Location::Kind::OutsideHull : Location::Kind::Remote;
       out.tet = t;
       out.steps = steps;
       return out;

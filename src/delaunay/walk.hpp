@@ -8,7 +8,9 @@
 // The walk stops
 //   - in a finite tet that contains p in its closure (no face separates), or
 //   - on entering a ghost tet: p is strictly outside that hull face, so the ghost tet
-//     conflicts with p (conflict.hpp) and seeds the cavity.
+//     conflicts with p (conflict.hpp) and seeds the cavity, or
+//   - on entering a proxy tet (parallel layer: mesh/tet_store.hpp): the walk would go on
+//     in another submesh; the result names the proxy.
 // If p equals a vertex of the final tet (exact coordinate equality), the result says so:
 // a duplicate is reported, never inserted. A point equal to a vertex lies in the closure
 // of a tet only if it is that tet's vertex, so this test is complete.
@@ -39,6 +41,7 @@ struct Location {
     InTet,        // tet is finite and contains p in its closure; p is no vertex of it
     OutsideHull,  // tet is a ghost tet whose hull face has p strictly outside
     OnVertex,     // p equals vertex `vertex` of tet
+    Remote,       // tet is a proxy: p lies beyond its face, in another submesh
   };
   Kind kind = Kind::InTet;
   TetId tet = kNoTet;

@@ -17,6 +17,12 @@
 //   - no null neighbours: a ghost vertex (kGhostVertex, never a point index) closes the
 //     convex hull with ghost tets (a,b,c,ghost), whose slots (0,1,2) are the hull face
 //     oriented out of the hull;
+//   - a proxy tet (a,b,c,kRemoteVertex) closes a face of a submesh whose other side lives
+//     in another submesh (the parallel layer, src/par): slots (0,1,2) are that face,
+//     oriented out of the submesh, face 3 is glued to the local tet, and faces 0-2 are
+//     open (kNoHalfFace): a traversal stops at a proxy and never leaves it. Its face
+//     vertices may include the ghost vertex (the face of a ghost tet). The sequential
+//     mesher never makes one;
 //   - dead slots have v(t,0) == kDeadVertex and are chained in a free list through
 //     adj(t,0); create() reuses them last-in first-out (good cache locality after a
 //     Bowyer-Watson commit, which frees and refills the same slots).
@@ -42,6 +48,10 @@ using HalfFace = std::uint32_t;  // 4*tet + face; build and read it with the hel
 inline constexpr VertexId kGhostVertex = 0xFFFFFFFFu;  // closes the hull; never a point
 inline constexpr VertexId kDeadVertex = 0xFFFFFFFEu;   // marks a free slot in v[4t]
 inline constexpr VertexId kNoVertex = 0xFFFFFFFDu;     // "none" in results
+inline constexpr VertexId kRemoteVertex = 0xFFFFFFFCu; // slot 3 of a proxy tet; never a point
+// Slot-3 ids of tets that are not finite (ghost, proxy): the smallest of them, so one
+// compare tells a finite tet from the others.
+inline constexpr VertexId kFirstSpecialVertex = kRemoteVertex;
 inline constexpr TetId kNoTet = 0xFFFFFFFFu;
 inline constexpr HalfFace kNoHalfFace = 0xFFFFFFFFu;
 
@@ -81,6 +91,7 @@ class TetStore {
 
   bool is_alive(TetId t) const { return data_[record_offset(t)] != kDeadVertex; }
   bool is_ghost(TetId t) const { return data_[record_offset(t) + 3] == kGhostVertex; }
+  bool is_proxy(TetId t) const { return data_[record_offset(t) + 3] == kRemoteVertex; }
 
   // A hint to the cache: tet t's record will be read soon (no effect on the contents).
   void prefetch(TetId t) const { __builtin_prefetch(&data_[record_offset(t)]); }

@@ -53,8 +53,10 @@ std::vector<std::string> TetStore::check_topology() const {
     if (!is_alive(t)) continue;
     ++alive;
     const VertexId* v = vertices(t);
+    const bool proxy = v[3] == kRemoteVertex;
     for (int i = 0; i < 4; ++i) {
-      if (v[i] == kDeadVertex || v[i] == kNoVertex)
+      if (proxy && (i == 3 || v[i] == kGhostVertex)) continue;
+      if (v[i] == kDeadVertex || v[i] == kNoVertex || v[i] == kRemoteVertex)
         report("tet-vertices: tet " + std::to_string(t) + " slot " + std::to_string(i) +
                " holds a reserved id");
       if (v[i] == kGhostVertex && i != 3)
@@ -70,6 +72,10 @@ std::vector<std::string> TetStore::check_topology() const {
       const HalfFace o = opposite(h);
       std::ostringstream where;
       where << "tet " << t << " face " << f;
+      if (proxy && f != 3) {
+        if (o != kNoHalfFace) report("proxy-open: " + where.str() + " of a proxy is linked");
+        continue;
+      }
       if (o == kNoHalfFace || tet_of(o) >= n) {
         report("adjacency-defined: " + where.str() + " has no neighbour");
         continue;
@@ -95,6 +101,12 @@ std::vector<std::string> TetStore::check_topology() const {
       if (is_ghost(t) && is_ghost(u) && f == 3)
         report("hull-face-finite-side: ghost tet " + std::to_string(t) +
                " has a ghost across its hull face");
+      if (is_proxy(u) && face_of(o) != 3)
+        report("proxy-face-3: " + where.str() + " is glued to an open face of proxy " +
+               std::to_string(u));
+      if (proxy && is_proxy(u))
+        report("proxy-local-side: proxy " + std::to_string(t) + " is glued to proxy " +
+               std::to_string(u));
     }
   }
   if (alive != live_)

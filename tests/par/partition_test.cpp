@@ -8,31 +8,13 @@
 #include <numeric>
 #include <string>
 
-#include "domain/analysis.hpp"
-#include "io/mesh_io.hpp"
+#include "par/par_meshes.hpp"
 #include "par/partition.hpp"
-#include "refine/initial.hpp"
-#include "refine/seq_refinement.hpp"
-#include "surface/init.hpp"
 
 namespace pdr::par {
 namespace {
 
-refine::VolumeMesh refined_cube_in_cube() {
-  const Plc plc = io::read_domain(std::string(PDR_DATA_DIR) + "/cube-in-cube.poly");
-  domain::DomainAnalysis an = domain::analyze(plc);
-  refine::VolumeMesh vm = refine::build_initial(surface::init_surface(an).mesh, an.domain.plc.holes);
-  refine::RefineOptions o;
-  o.max_volume = 0.3;
-  o.d = an.report.feature.d;
-  refine::refine(vm, o);
-  return vm;
-}
-
-const refine::VolumeMesh& mesh() {
-  static const refine::VolumeMesh vm = refined_cube_in_cube();
-  return vm;
-}
+const refine::VolumeMesh& mesh() { return test::cube_in_cube(); }
 
 // The finite tets of part k, reached from one of them across faces within the part.
 std::size_t reachable_in_part(const TetStore& s, const Partition& p, std::uint32_t k) {

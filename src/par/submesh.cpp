@@ -1,0 +1,272 @@
+// Submesh: extraction from a partitioned mesh, migration out and in, relink notices
+// (par/submesh.hpp).
+#include "par/submesh.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <unordered_set>
+
+#include "mesh/tables.hpp"
+
+namespace pdr::par {
+
+FaceKey face_key(Gid a, Gid b, Gid c) {
+  FaceKey k{{a, b, c}};
+  std::sort(k.v.begin(), k.v.end());
+  return k;
+}
+
+std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
+  std::uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (const Gid g : k.v) {
+    h ^= g + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h *= 0xBF58476D1CE4E5B9ull;
+  }
+  return static_cast<std::size_t>(h ^ (h >> 31));
+}
+
+VertexId Submesh::local_vertex(Gid g, const Point* p) {
+  if (g == kGhostGid) return kGhostVertex;
+  const auto [it, added] = local_.try_emplace(g, static_cast<VertexId>(points_.size()));
+  if (added) {
+    if (p == nullptr) throw std::logic_error("submesh: vertex " + std::to_string(g) + " unknown");
+    points_.push_back(*p);
+    gids_.push_back(g);
+  }
+  return it->second;
+}
+
+FaceKey Submesh::key_of(TetId t, int f) const {
+  const auto& fv = tables::kFaceVertex[f];
+  return face_key(gid(store_.vertex(t, fv[0])), gid(store_.vertex(t, fv[1])),
+                  gid(store_.vertex(t, fv[2])));
+}
+
+void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside) {
+  if (inside_.size() < store_.slots()) {
+    inside_.resize(store_.slots(), 0);
+    tet_gid_.resize(store_.slots(), kNoGid);
+    epoch_.resize(store_.slots(), 0);
+  }
+  inside_[t] = inside;
+  tet_gid_[t] = g;
+  epoch_[t] = epoch;
+  if (g != kNoGid) tet_at_[g] = t;
+}
+
+TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
+  const auto& fv = tables::kFaceVertex[f];
+  const TetId p = store_.create(store_.vertex(t, fv[0]), store_.vertex(t, fv[1]),
+                                store_.vertex(t, fv[2]), kRemoteVertex);
+  record_tet(p, kNoGid, 0, 0);
+  store_.link(half_face(t, f), half_face(p, 3));
+  side_[p] = side;
+  proxy_at_[key_of(p, 3)] = p;
+  return p;
+}
+
+void Submesh::drop_proxy(TetId proxy) {
+  proxy_at_.erase(key_of(proxy, 3));
+  side_.erase(proxy);
+  store_.destroy(proxy);
+}
+
+void Submesh::claim(TetId proxy, const Claim& c) {
+  Claim& mine = side_.at(proxy).claim;
+  if (c.epoch > mine.epoch) mine = c;
+}
+
+Submesh Submesh::extract(ActorId k, const TetStore& s, std::span<const Point> pts,
+                         std::span<const std::uint8_t> inside, const Partition& p) {
+  Submesh m(k);
+  std::vector<TetId> local(s.slots(), kNoTet);
+  std::vector<TetId> mine;
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t) || p.part[t] != k) continue;
+    VertexId v[4];
+    for (int i = 0; i < 4; ++i) {
+      const VertexId g = s.vertex(t, i);
+      v[i] = g == kGhostVertex ? kGhostVertex : m.local_vertex(g, &pts[g]);
+    }
+    local[t] = m.store_.create(v[0], v[1], v[2], v[3]);
+    mine.push_back(t);
+  }
+  for (const TetId t : mine) m.record_tet(local[t], t, 0, t < inside.size() ? inside[t] : 0);
+  for (const TetId t : mine)
+    for (int f = 0; f < 4; ++f) {
+      const TetId u = s.neighbour(t, f);
+      if (p.part[u] == k)
+        m.store_.set_opposite(half_face(local[t], f), half_face(local[u], s.back_face(t, f)));
+      else
+        m.add_proxy(local[t], f, Side{u, Claim{p.part[u], 0}});
+    }
+  return m;
+}
+
+Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Relink>& relinks) {
+  if (to == id_) throw std::logic_error("submesh: a migration to itself");
+  const std::unordered_set<TetId> taken(tets.begin(), tets.end());
+  Migration m;
+  m.from = id_;
+  m.to = to;
+  std::unordered_set<VertexId> seen;
+  std::vector<std::pair<TetId, int>> keep_faces;  // kept real tets' faces to close
+  std::vector<Side> keep_sides;
+  std::vector<TetId> drop;
+  for (const TetId t : tets) {
+    if (!store_.is_alive(t) || store_.is_proxy(t))
+      throw std::logic_error("submesh: take of a dead tet or a proxy");
+    TetRecord r;
+    r.gid = tet_gid_[t];
+    r.epoch = epoch_[t] + 1;
+    const Claim now{to, r.epoch};
+    for (int i = 0; i < 4; ++i) {
+      const VertexId v = store_.vertex(t, i);
+      r.v[static_cast<std::size_t>(i)] = gid(v);
+      if (v != kGhostVertex && seen.insert(v).second) m.vertices.push_back({gid(v), points_[v]});
+    }
+    r.inside = inside_[t];
+    for (int f = 0; f < 4; ++f) {
+      const TetId u = store_.neighbour(t, f);
+      Side& across = r.across[static_cast<std::size_t>(f)];
+      if (taken.count(u) != 0) {
+        across = Side{tet_gid_[u], Claim{kSameMigration, 0}};
+      } else if (store_.is_proxy(u)) {
+        across = side_.at(u);
+        // Tell the submesh believed to hold the tet across. When that is this one (the tet
+        // is on its way here), nothing is sent: its arrival finds this move in moved_.
+        if (across.claim.holder != id_)
+          relinks.push_back({across.claim.holder, across.tet, key_of(t, f), r.gid, now});
+        drop.push_back(u);
+      } else {
+        across = Side{tet_gid_[u], Claim{id_, epoch_[u]}};
+        keep_faces.emplace_back(u, store_.back_face(t, f));
+        keep_sides.push_back(Side{r.gid, now});
+      }
+    }
+    moved_[r.gid] = now;
+    m.tets.push_back(r);
+  }
+  for (std::size_t i = 0; i < keep_faces.size(); ++i)
+    add_proxy(keep_faces[i].first, keep_faces[i].second, keep_sides[i]);
+  for (const TetId u : drop) drop_proxy(u);
+  for (const TetId t : tets) {
+    tet_at_.erase(tet_gid_[t]);
+    record_tet(t, kNoGid, 0, 0);
+    store_.destroy(t);
+  }
+  return m;
+}
+
+std::vector<TetId> Submesh::give(const Migration& m) {
+  if (m.to != id_) throw std::logic_error("submesh: a migration for another submesh");
+  for (const VertexRecord& v : m.vertices) local_vertex(v.gid, &v.p);
+  std::vector<TetId> ids;
+  ids.reserve(m.tets.size());
+  for (const TetRecord& r : m.tets) {
+    VertexId v[4];
+    for (int i = 0; i < 4; ++i) v[i] = local_vertex(r.v[static_cast<std::size_t>(i)], nullptr);
+    const TetId t = store_.create(v[0], v[1], v[2], v[3]);
+    record_tet(t, r.gid, r.epoch, r.inside);
+    moved_.erase(r.gid);
+    ids.push_back(t);
+  }
+  std::unordered_map<FaceKey, HalfFace, FaceKeyHash> internal;
+  for (std::size_t i = 0; i < m.tets.size(); ++i) {
+    const TetId t = ids[i];
+    for (int f = 0; f < 4; ++f) {
+      const Side& across = m.tets[i].across[static_cast<std::size_t>(f)];
+      const FaceKey k = key_of(t, f);
+      if (across.claim.holder == kSameMigration) {
+        const auto it = internal.find(k);
+        if (it == internal.end()) {
+          internal.emplace(k, half_face(t, f));
+        } else {
+          store_.link(half_face(t, f), it->second);
+          internal.erase(it);
+        }
+        continue;
+      }
+      if (const auto it = proxy_at_.find(k); it != proxy_at_.end()) {
+        // The other side is here: glue to the tet behind the proxy.
+        const TetId proxy = it->second;
+        const HalfFace back = store_.opposite(proxy, 3);
+        drop_proxy(proxy);
+        store_.link(half_face(t, f), back);
+        continue;
+      }
+      // Elsewhere, or on its way here (claimed here but not here yet: the proxy then
+      // names this submesh until the tet arrives and replaces it). If this submesh gave
+      // that tet away, its own record of the move may be newer than the migration's.
+      const TetId p = add_proxy(t, f, across);
+      if (const auto gone = moved_.find(across.tet); gone != moved_.end()) claim(p, gone->second);
+    }
+  }
+  if (!internal.empty())
+    throw std::logic_error("submesh: a migration whose internal faces do not pair up");
+  for (const TetId t : ids) {
+    const auto w = waiting_.find(tet_gid_[t]);
+    if (w == waiting_.end()) continue;
+    const std::vector<Relink> notes = std::move(w->second);
+    waiting_.erase(w);
+    for (const Relink& r : notes) {
+      ActorId unused = 0;
+      relink(r, &unused);  // `about` is here now: applies
+    }
+  }
+  return ids;
+}
+
+bool Submesh::relink(const Relink& r, ActorId* forward) {
+  if (tet_at_.count(r.about) != 0) {
+    // A proxy on that face, unless the moved tet is here too (then the face is inside).
+    if (const auto it = proxy_at_.find(r.face); it != proxy_at_.end()) claim(it->second, r.claim);
+    return true;
+  }
+  if (const auto gone = moved_.find(r.about); gone != moved_.end()) {
+    *forward = gone->second.holder;
+    return false;
+  }
+  waiting_[r.about].push_back(r);  // on its way here
+  return true;
+}
+
+std::optional<Claim> Submesh::moved(Gid g) const {
+  if (const auto gone = moved_.find(g); gone != moved_.end()) return gone->second;
+  return std::nullopt;
+}
+
+std::size_t Submesh::waiting_relinks() const {
+  std::size_t n = 0;
+  for (const auto& [g, v] : waiting_) n += v.size();
+  return n;
+}
+
+std::vector<std::string> Submesh::check() const {
+  std::vector<std::string> out = store_.check_topology();
+  std::size_t proxies = 0;
+  for (TetId t = 0; t < store_.slots(); ++t) {
+    if (!store_.is_alive(t)) continue;
+    if (!store_.is_proxy(t)) {
+      const auto it = tet_at_.find(tet_gid_[t]);
+      if (it == tet_at_.end() || it->second != t)
+        out.push_back("submesh.tet-index: tet " + std::to_string(t) + " of submesh " +
+                      std::to_string(id_) + " is not indexed by its global id");
+      continue;
+    }
+    ++proxies;
+    const auto it = proxy_at_.find(key_of(t, 3));
+    if (side_.count(t) == 0 || it == proxy_at_.end() || it->second != t)
+      out.push_back("submesh.proxy-index: proxy " + std::to_string(t) + " of submesh " +
+                    std::to_string(id_) + " is not indexed by its face");
+  }
+  if (proxies != side_.size() || proxies != proxy_at_.size() ||
+      store_.live() - proxies != tet_at_.size())
+    out.push_back("submesh.index: " + std::to_string(proxies) + " proxies, " +
+                  std::to_string(side_.size()) + " sides, " +
+                  std::to_string(proxy_at_.size()) + " indexed faces, " +
+                  std::to_string(tet_at_.size()) + " indexed tets");
+  return out;
+}
+
+}  // namespace pdr::par

@@ -1,0 +1,164 @@
+// Submesh: one of the N pieces of the distributed mesh (paper §4, items 1-2: "M_o has been
+// elementwise partitioned into N submeshes ... faces in I_jk are replicated in any
+// submeshes that contain them ... each face contains a reference to S_k"), and the
+// migration of tets between submeshes that moves the interfaces as the mesh is refined.
+//
+// A submesh holds its tets in the kernel's TetStore with dense local vertex ids; every
+// vertex also has a global id (Gid), the same in every submesh. A face whose other side
+// lives in another submesh is closed by a proxy tet (mesh/tet_store.hpp) that names the
+// tet across it and where that tet is believed to be (M3 below).
+//
+// Tets have global ids too, and keep them when they move (a tet is never rebuilt by a
+// migration), with an epoch: how many times the tet has moved.
+//
+// Migration: take() removes a set of tets and returns them as a Migration for submesh
+// `to`; give() adds a Migration's tets. Together they keep, over all submeshes and the
+// messages in flight:
+//   (M1) every tet of the global mesh is in exactly one place, with its orientation and
+//        its inside flag;
+//   (M2) every face of a tet has, on its other side, a tet of the same submesh or a proxy;
+//        a proxy's face is a face of a tet held somewhere else (or on its way here), with
+//        opposite orientation;
+//   (M3) a proxy names the tet across its face and holds a claim about where that tet is
+//        (holder, epoch). Claims about one tet are ordered by epoch, and only a newer
+//        claim replaces an older one. When a tet moves, its old submesh sends a relink
+//        notice (Relink) with the new claim to the submesh it believes holds each remote
+//        neighbour; a submesh that gave that neighbour away forwards the notice to where
+//        it sent it (moved(): its latest hand-over, so every hop follows the neighbour's
+//        own moves in time order), and one that is still waiting for the neighbour keeps
+//        the notice until the neighbour arrives. Once every message is delivered, every
+//        proxy's claim is the newest, so it names the holder of the tet across its face.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "geom/point.hpp"
+#include "mesh/tet_store.hpp"
+#include "par/partition.hpp"
+
+namespace pdr::par {
+
+using Gid = std::uint64_t;                      // a vertex's or a tet's global id
+using ActorId = std::uint32_t;                  // a submesh
+inline constexpr Gid kGhostGid = ~Gid{0};       // the ghost vertex, in every submesh
+inline constexpr Gid kNoGid = ~Gid{0} - 1;
+inline constexpr ActorId kSameMigration = 0xFFFFFFFFu;  // Side::claim.holder: internal
+
+// A face by the global ids of its vertices, sorted (orientation is not part of the key).
+struct FaceKey {
+  std::array<Gid, 3> v{};
+  bool operator==(const FaceKey&) const = default;
+};
+FaceKey face_key(Gid a, Gid b, Gid c);
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const;
+};
+
+// "Tet t is at `holder`, as of its epoch-th move."
+struct Claim {
+  ActorId holder = 0;
+  std::uint32_t epoch = 0;
+};
+
+// What a submesh knows of the tet across one of its faces.
+struct Side {
+  Gid tet = kNoGid;
+  Claim claim;
+};
+
+struct TetRecord {
+  Gid gid = 0;
+  std::uint32_t epoch = 0;          // moves so far, this one included
+  std::array<Gid, 4> v{};           // positively oriented; a ghost has kGhostGid in slot 3
+  std::uint8_t inside = 0;          // the tet lies in Ω
+  std::array<Side, 4> across{};     // per face; claim.holder kSameMigration: in this migration
+};
+
+struct VertexRecord {
+  Gid gid = 0;
+  Point p{};
+};
+
+struct Migration {
+  ActorId from = 0, to = 0;
+  std::vector<TetRecord> tets;
+  std::vector<VertexRecord> vertices;  // every finite vertex of the tets
+};
+
+// For the submesh `recipient`, believed to hold tet `about`: across `face` from it, tet
+// `tet` has moved (claim).
+struct Relink {
+  ActorId recipient = 0;
+  Gid about = kNoGid;
+  FaceKey face;
+  Gid tet = kNoGid;
+  Claim claim;
+};
+
+class Submesh {
+ public:
+  explicit Submesh(ActorId id) : id_(id) {}
+
+  // Submesh k of a partition of (s, pts): its tets (ghosts included), with proxies on the
+  // faces towards the other parts. Vertex v of pts gets global id v, tet t global id t.
+  static Submesh extract(ActorId k, const TetStore& s, std::span<const Point> pts,
+                         std::span<const std::uint8_t> inside, const Partition& p);
+
+  ActorId id() const { return id_; }
+  const TetStore& store() const { return store_; }
+  std::span<const Point> points() const { return points_; }
+  Gid gid(VertexId v) const { return v == kGhostVertex ? kGhostGid : gids_[v]; }
+  Gid tet_gid(TetId t) const { return tet_gid_[t]; }
+  bool inside(TetId t) const { return t < inside_.size() && inside_[t] != 0; }
+  // What a proxy knows of the tet across it (precondition: t is a live proxy).
+  const Side& proxy_side(TetId t) const { return side_.at(t); }
+  std::size_t real_tets() const { return store_.live() - side_.size(); }
+  std::size_t proxies() const { return side_.size(); }
+  std::size_t waiting_relinks() const;
+
+  // Removes `tets` (live, not proxies, no repeats) for submesh `to` (not this one).
+  // Kept tets glued to them get proxies; proxies glued to them are dropped, and `relinks`
+  // gets the notices for the submeshes those proxies name.
+  Migration take(std::span<const TetId> tets, ActorId to, std::vector<Relink>& relinks);
+  // Adds a migration's tets (m.to == id()); returns their local ids, in m.tets's order.
+  std::vector<TetId> give(const Migration& m);
+
+  // Applies a relink notice addressed here; false with *forward set when the notice must
+  // go on to the submesh this one sent r.about to.
+  bool relink(const Relink& r, ActorId* forward);
+  // Where this submesh last sent tet g, if it did and does not hold it now.
+  std::optional<Claim> moved(Gid g) const;
+
+  // M2 here: the store's topology, proxies indexed by their faces.
+  std::vector<std::string> check() const;
+
+ private:
+  VertexId local_vertex(Gid g, const Point* p);  // adds the vertex if new (p given)
+  FaceKey key_of(TetId t, int f) const;
+  TetId add_proxy(TetId t, int f, const Side& side);  // glued to face f of real tet t
+  void drop_proxy(TetId proxy);
+  void claim(TetId proxy, const Claim& c);  // keeps the newer claim
+  void record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside);
+
+  ActorId id_;
+  TetStore store_;
+  std::vector<Point> points_;
+  std::vector<Gid> gids_;
+  std::unordered_map<Gid, VertexId> local_;
+  std::vector<std::uint8_t> inside_;      // per slot
+  std::vector<Gid> tet_gid_;              // per slot
+  std::vector<std::uint32_t> epoch_;      // per slot
+  std::unordered_map<Gid, TetId> tet_at_;  // real tets by global id
+  std::unordered_map<TetId, Side> side_;   // per live proxy
+  std::unordered_map<FaceKey, TetId, FaceKeyHash> proxy_at_;
+  std::unordered_map<Gid, Claim> moved_;   // tets given away: the latest hand-over
+  std::unordered_map<Gid, std::vector<Relink>> waiting_;  // notices about tets on their way
+};
+
+}  // namespace pdr::par
