@@ -136,7 +136,8 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
         // Tell the submesh believed to hold the tet across. When that is this one (the tet
         // is on its way here), nothing is sent: its arrival finds this move in moved_.
         if (across.claim.holder != id_)
-          relinks.push_back({across.claim.holder, across.tet, key_of(t, f), r.gid, now});
+          relinks.push_back({across.claim.holder, across.tet, key_of(t, f), r.gid, now,
+                             across.claim.epoch});
         drop.push_back(u);
       } else {
         across = Side{tet_gid_[u], Claim{id_, epoch_[u]}};
@@ -207,32 +208,31 @@ std::vector<TetId> Submesh::give(const Migration& m) {
   for (const TetId t : ids) {
     const auto w = waiting_.find(tet_gid_[t]);
     if (w == waiting_.end()) continue;
-    const std::vector<Relink> notes = std::move(w->second);
+    std::vector<Relink> notes = std::move(w->second);
     waiting_.erase(w);
-    for (const Relink& r : notes) {
-      ActorId unused = 0;
-      relink(r, &unused);  // `about` is here now: applies
-    }
+    for (Relink& r : notes) relink(r);  // `about` is here now: applies
   }
   return ids;
 }
 
-bool Submesh::relink(const Relink& r, ActorId* forward) {
+bool Submesh::relink(Relink& r) {
   if (tet_at_.count(r.about) != 0) {
     // A proxy on that face, unless the moved tet is here too (then the face is inside).
     if (const auto it = proxy_at_.find(r.face); it != proxy_at_.end()) claim(it->second, r.claim);
     return true;
   }
-  if (const auto gone = moved_.find(r.about); gone != moved_.end()) {
-    *forward = gone->second.holder;
+  if (const auto next = moved(r.about, r.about_epoch)) {
+    r.recipient = next->holder;
+    r.about_epoch = next->epoch;
     return false;
   }
   waiting_[r.about].push_back(r);  // on its way here
   return true;
 }
 
-std::optional<Claim> Submesh::moved(Gid g) const {
-  if (const auto gone = moved_.find(g); gone != moved_.end()) return gone->second;
+std::optional<Claim> Submesh::moved(Gid g, std::uint32_t after) const {
+  if (const auto gone = moved_.find(g); gone != moved_.end() && gone->second.epoch > after)
+    return gone->second;
   return std::nullopt;
 }
 

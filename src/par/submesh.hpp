@@ -23,11 +23,12 @@
 //        (holder, epoch). Claims about one tet are ordered by epoch, and only a newer
 //        claim replaces an older one. When a tet moves, its old submesh sends a relink
 //        notice (Relink) with the new claim to the submesh it believes holds each remote
-//        neighbour; a submesh that gave that neighbour away forwards the notice to where
-//        it sent it (moved(): its latest hand-over, so every hop follows the neighbour's
-//        own moves in time order), and one that is still waiting for the neighbour keeps
-//        the notice until the neighbour arrives. Once every message is delivered, every
-//        proxy's claim is the newest, so it names the holder of the tet across its face.
+//        neighbour; a submesh that gave that neighbour away at a later move than the
+//        claim that brought the notice forwards it there (moved(): every hop follows the
+//        neighbour's own moves in time order, so no notice circles), and one that has
+//        not seen that move yet keeps the notice until the neighbour arrives. Once every
+//        message is delivered, every proxy's claim is the newest, so it names the holder
+//        of the tet across its face.
 #pragma once
 
 #include <array>
@@ -91,14 +92,15 @@ struct Migration {
   std::vector<VertexRecord> vertices;  // every finite vertex of the tets
 };
 
-// For the submesh `recipient`, believed to hold tet `about`: across `face` from it, tet
-// `tet` has moved (claim).
+// For the submesh `recipient`, believed to hold tet `about` (by a claim of epoch
+// `about_epoch`): across `face` from it, tet `tet` has moved (claim).
 struct Relink {
   ActorId recipient = 0;
   Gid about = kNoGid;
   FaceKey face;
   Gid tet = kNoGid;
   Claim claim;
+  std::uint32_t about_epoch = 0;
 };
 
 class Submesh {
@@ -115,6 +117,11 @@ class Submesh {
   std::span<const Point> points() const { return points_; }
   Gid gid(VertexId v) const { return v == kGhostVertex ? kGhostGid : gids_[v]; }
   Gid tet_gid(TetId t) const { return tet_gid_[t]; }
+  // The real tet with global id g, or kNoTet when it is not here.
+  TetId find_tet(Gid g) const {
+    const auto it = tet_at_.find(g);
+    return it == tet_at_.end() ? kNoTet : it->second;
+  }
   bool inside(TetId t) const { return t < inside_.size() && inside_[t] != 0; }
   // What a proxy knows of the tet across it (precondition: t is a live proxy).
   const Side& proxy_side(TetId t) const { return side_.at(t); }
@@ -129,11 +136,13 @@ class Submesh {
   // Adds a migration's tets (m.to == id()); returns their local ids, in m.tets's order.
   std::vector<TetId> give(const Migration& m);
 
-  // Applies a relink notice addressed here; false with *forward set when the notice must
-  // go on to the submesh this one sent r.about to.
-  bool relink(const Relink& r, ActorId* forward);
-  // Where this submesh last sent tet g, if it did and does not hold it now.
-  std::optional<Claim> moved(Gid g) const;
+  // Applies a relink notice addressed here; false when it must go on to the submesh this
+  // one sent r.about to: then r.recipient and r.about_epoch name that hand-over.
+  bool relink(Relink& r);
+  // Where this submesh sent tet g at a move later than the claim of epoch `after` that
+  // points here; nullopt when there is none: g is here, or on its way here. Following
+  // these records only ever goes to later moves, so it ends at g's holder.
+  std::optional<Claim> moved(Gid g, std::uint32_t after) const;
 
   // M2 here: the store's topology, proxies indexed by their faces.
   std::vector<std::string> check() const;

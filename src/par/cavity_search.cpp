@@ -1,0 +1,59 @@
+// The two local steps of the distributed cavity search (par/cavity_search.hpp).
+#include "par/cavity_search.hpp"
+
+#include <unordered_set>
+
+#include "delaunay/conflict.hpp"
+
+namespace pdr::par {
+
+RootCavity CavitySearch::root_cavity(const Submesh& s, const Point& p, TetId hint) {
+  RootCavity out;
+  const TetStore& st = s.store();
+  const Location loc = locate(st, s.points(), p, hint, rng_);
+  if (loc.kind == Location::Kind::OnVertex) {
+    out.kind = RootCavity::Kind::OnVertex;
+    return out;
+  }
+  if (loc.kind == Location::Kind::Remote) {
+    const Side& side = s.proxy_side(loc.tet);
+    out.kind = RootCavity::Kind::Remote;
+    out.walk = true;
+    out.fetch[side.claim.holder].push_back(side);
+    return out;
+  }
+  builder_.build(st, s.points(), p, loc.tet, out.cavity);
+  for (const TetId t : out.cavity.ring)
+    if (st.is_proxy(t)) {
+      const Side& side = s.proxy_side(t);
+      out.kind = RootCavity::Kind::Remote;
+      out.fetch[side.claim.holder].push_back(side);
+    }
+  return out;
+}
+
+std::vector<TetId> CavitySearch::fetch_set(const Submesh& s, const Point& p,
+                                           std::span<const Gid> wanted, bool walk) {
+  const TetStore& st = s.store();
+  std::vector<TetId> out;
+  std::unordered_set<TetId> taken;
+  const auto add = [&](TetId t) {
+    if (!st.is_proxy(t) && taken.insert(t).second) out.push_back(t);
+  };
+  for (const Gid g : wanted) {
+    TetId t = s.find_tet(g);
+    if (t == kNoTet || taken.count(t) != 0) continue;
+    if (walk) {
+      const Location loc = locate(st, s.points(), p, t, rng_);
+      t = loc.kind == Location::Kind::Remote ? st.neighbour(loc.tet, 3) : loc.tet;
+    }
+    add(t);
+    if (!in_conflict(st, s.points(), t, p)) continue;
+    builder_.build(st, s.points(), p, t, part_);
+    for (const TetId u : part_.conflict) add(u);
+    for (const TetId u : part_.ring) add(u);
+  }
+  return out;
+}
+
+}  // namespace pdr::par
