@@ -32,6 +32,11 @@ MpiSession::MpiSession(int* argc, char*** argv) {
 
 MpiSession::~MpiSession() { MPI_Finalize(); }
 
+void MpiSession::abort(int code) {
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::abort();  // MPI_Abort does not return; if it did, do not go on
+}
+
 bool launched_by_mpi() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE",
                         "MPI_LOCALNRANKS", "SLURM_STEP_NUM_TASKS"})
@@ -68,15 +73,27 @@ void MpiTransport::do_send(int to, Bytes message) {
 }
 
 void MpiTransport::reap() {
-  while (!sending_.empty()) {
+  // Every completed send, not only a prefix: a large message to a busy peer must not keep
+  // the buffers behind it alive. Moving an Outgoing keeps its bytes where they are.
+  for (std::size_t i = 0; i < sending_.size();) {
     int done = 0;
-    check(MPI_Test(&sending_.front().request, &done, MPI_STATUS_IGNORE), "MPI_Test");
-    if (!done) break;
-    sending_.pop_front();
+    check(MPI_Test(&sending_[i].request, &done, MPI_STATUS_IGNORE), "MPI_Test");
+    if (!done) {
+      ++i;
+      continue;
+    }
+    if (i + 1 != sending_.size()) sending_[i] = std::move(sending_.back());
+    sending_.pop_back();
   }
 }
 
 std::size_t MpiTransport::do_poll(const Deliver& deliver, std::size_t max) {
+  if (polling_) throw std::logic_error("mpi: poll() called from a message handler");
+  polling_ = true;
+  struct Done {
+    bool& flag;
+    ~Done() { flag = false; }
+  } done{polling_};
   reap();
   std::size_t n = 0;
   while (n < max) {

@@ -2,8 +2,8 @@
 //
 // Messages: MPI_Isend of the bytes on a private duplicate of MPI_COMM_WORLD, one tag, so
 // MPI's non-overtaking rule gives FIFO per pair; poll() receives with MPI_Improbe +
-// MPI_Mrecv (any size, no pre-posted buffers); a send's buffer is kept until MPI_Testsome
-// reports it complete. Nothing blocks: a blocking send of a large message could deadlock
+// MPI_Mrecv (any size, no pre-posted buffers) into one buffer, so a handler may not poll
+// again (refused); a send's buffer is kept until MPI_Test reports that send complete. Nothing blocks: a blocking send of a large message could deadlock
 // against a peer doing the same.
 // Reductions: MPI_Iallreduce (sum) on a second duplicate, so they never meet messages.
 // Teardown waits for the outstanding sends (every message was received by then: the
@@ -12,13 +12,15 @@
 
 #include <mpi.h>
 
-#include <deque>
+#include <vector>
 
 #include "par/transport.hpp"
 
 namespace pdr::par {
 
-// MPI_Init / MPI_Finalize around a scope (MPI_THREAD_SINGLE: one thread per rank).
+// MPI_Init / MPI_Finalize around a scope (MPI_THREAD_SINGLE: one thread per rank). A
+// transport must not outlive it. A rank that fails must call abort() (MPI_Abort) rather
+// than unwind into MPI_Finalize, which would wait for peers that never come.
 class MpiSession {
  public:
   MpiSession(int* argc, char*** argv);
@@ -27,6 +29,7 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
   int rank() const { return rank_; }
   int size() const { return size_; }
+  [[noreturn]] static void abort(int code);
 
  private:
   int rank_ = 0, size_ = 1;
@@ -61,7 +64,8 @@ class MpiTransport final : public Transport {
 
   MPI_Comm messages_ = MPI_COMM_NULL, reductions_ = MPI_COMM_NULL;
   int rank_ = 0, size_ = 1;
-  std::deque<Outgoing> sending_;
+  std::vector<Outgoing> sending_;
+  bool polling_ = false;
   Bytes incoming_;
   Reduction mine_{}, sum_{};
   MPI_Request reduction_ = MPI_REQUEST_NULL;

@@ -8,7 +8,9 @@ bool TerminationDetector::step(bool idle) {
     case State::Quiet:
       if (idle) {
         dirty_ = false;
-        t_.start_reduction({t_.sent(), t_.received(), 0});
+        sent_at_snapshot_ = t_.sent();
+        received_at_snapshot_ = t_.received();
+        t_.start_reduction({sent_at_snapshot_, received_at_snapshot_, 0});
         ++rounds_;
         state_ = State::Counting;
       }
@@ -16,7 +18,9 @@ bool TerminationDetector::step(bool idle) {
     case State::Counting:
       if (const auto r = t_.reduction_done()) {
         balanced_ = (*r)[0] == (*r)[1];
-        t_.start_reduction({0, 0, (dirty_ || !idle) ? 1u : 0u});
+        const bool changed =
+            t_.sent() != sent_at_snapshot_ || t_.received() != received_at_snapshot_;
+        t_.start_reduction({0, 0, (dirty_ || !idle || changed) ? 1u : 0u});
         ++rounds_;
         state_ = State::Confirming;
       }

@@ -6,8 +6,9 @@
 //   a rank that is idle (no queued work, no timer, no live search of its own, nothing
 //   unsent) and has no round open starts round 1 with (sent, received) and clears its
 //   dirty flag; any work it does afterwards (a message handled, a task started, a timer
-//   fired) sets the flag. When round 1 completes it starts round 2 at once with
-//   (dirty or busy); when round 2 completes, the run has terminated iff round 2 summed to
+//   fired) sets the flag, and so does any change of its own counts since the snapshot
+//   (so a send the caller forgot to report still counts). When round 1 completes it
+//   starts round 2 at once with (dirty or busy); when round 2 completes, the run has terminated iff round 2 summed to
 //   zero and round 1's sums of sent and received are equal; otherwise the rank waits until
 //   it is idle again and starts the next pair.
 // Why it is sound: let T be the moment the last rank started round 1. Round 1 completes on
@@ -46,6 +47,7 @@ class TerminationDetector {
   State state_ = State::Quiet;
   bool dirty_ = false;
   bool balanced_ = false;  // round 1: sent == received over all ranks
+  std::uint64_t sent_at_snapshot_ = 0, received_at_snapshot_ = 0;
   std::uint64_t rounds_ = 0;
 };
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <deque>
+#include <stdexcept>
 #include <vector>
 
 #include "par/termination.hpp"
@@ -56,7 +57,10 @@ inline std::uint64_t expected_total(int ranks, int per_rank, std::uint32_t ttl) 
 // One rank's event loop, one iteration per step().
 class ChainRank {
  public:
-  ChainRank(Transport& t, int per_rank, std::uint32_t ttl) : t_(t), td_(t) {
+  // `pad`: bytes appended to every message, a pattern of the token's id that the
+  // receiver checks (large messages take MPI's rendezvous path).
+  ChainRank(Transport& t, int per_rank, std::uint32_t ttl, std::size_t pad = 0)
+      : t_(t), td_(t), pad_(pad) {
     for (const Token& k : initial_tokens(t.rank(), per_rank, ttl)) work_.push_back(k);
   }
   // One iteration; true once the run has terminated.
@@ -72,8 +76,9 @@ class ChainRank {
         if (to == t_.rank()) {
           work_.push_back(c);
         } else {
-          Bytes b(sizeof c);
+          Bytes b(sizeof c + pad_);
           std::memcpy(b.data(), &c, sizeof c);
+          for (std::size_t i = 0; i < pad_; ++i) b[sizeof c + i] = pattern(c, i);
           t_.send(to, std::move(b));
         }
       }
@@ -87,13 +92,20 @@ class ChainRank {
   bool idle() const { return work_.empty(); }
 
  private:
+  static std::byte pattern(const Token& k, std::size_t i) {
+    return static_cast<std::byte>((k.id >> (i % 8)) + i);
+  }
   void receive(std::span<const std::byte> m) {
     Token k;
+    if (m.size() != sizeof k + pad_) throw std::runtime_error("chain: a message of the wrong size");
     std::memcpy(&k, m.data(), sizeof k);
+    for (std::size_t i = 0; i < pad_; ++i)
+      if (m[sizeof k + i] != pattern(k, i)) throw std::runtime_error("chain: a corrupted message");
     work_.push_back(k);
   }
   Transport& t_;
   TerminationDetector td_;
+  std::size_t pad_ = 0;
   std::deque<Token> work_;
   std::uint64_t handled_ = 0;
 };

@@ -10,6 +10,7 @@
 
 #include "par/par_meshes.hpp"
 #include "par/partition.hpp"
+#include "par/submesh.hpp"
 
 namespace pdr::par {
 namespace {
@@ -91,6 +92,43 @@ TEST(Partition, MorePartsThanTetsIsRefused) {
   EXPECT_THROW(partition_tets(s, mesh().inside, 0, 1), std::invalid_argument);
   EXPECT_THROW(partition_tets(s, mesh().inside, static_cast<std::uint32_t>(s.slots()) + 1, 1),
                std::invalid_argument);
+}
+
+// Near one part per tet, METIS may leave parts empty: that is refused with a clear
+// error, never returned.
+TEST(Partition, EmptyPartsAreRefused) {
+  const refine::VolumeMesh vm = test::refined("cube-in-cube.poly", 50.0);
+  const TetStore& s = vm.dt.store();
+  std::uint32_t finite = 0;
+  for (TetId t = 0; t < s.slots(); ++t) finite += s.is_alive(t) && !s.is_ghost(t);
+  int refused = 0;
+  for (std::uint32_t parts = finite / 4; parts <= finite; parts += std::max(1u, finite / 8)) {
+    try {
+      const Partition p = partition_tets(s, vm.inside, parts, 1);
+      for (std::uint32_t k = 0; k < parts; ++k) EXPECT_GT(p.tets[k], 0u) << parts << " parts";
+    } catch (const std::invalid_argument& e) {
+      ++refused;
+      EXPECT_NE(std::string(e.what()).find("empty"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_GT(refused, 0);
+}
+
+// A submesh's store (proxies on its interface faces) partitions too: proxies get no part.
+TEST(Partition, ProxiesAreLeftOut) {
+  const refine::VolumeMesh& vm = mesh();
+  const Partition whole = partition_tets(vm.dt.store(), vm.inside, 6, 3);
+  const Submesh sub = Submesh::extract(2, vm.dt.store(), vm.dt.points(), vm.inside, whole);
+  const TetStore& s = sub.store();
+  ASSERT_GT(sub.proxies(), 0u);
+  const Partition p = partition_tets(s, {}, 3, 3);
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t)) continue;
+    if (s.is_proxy(t))
+      EXPECT_EQ(p.part[t], kNoPart);
+    else
+      EXPECT_LT(p.part[t], 3u);
+  }
 }
 
 }  // namespace

@@ -26,14 +26,24 @@ struct Sim {
     for (int r = 0; r < p; ++r) ranks.push_back(std::make_unique<ChainRank>(net.endpoint(r), per_rank, ttl));
   }
   // Random steps until every rank has terminated or `budget` steps passed; true if all did.
-  // A rank that terminated keeps stepping (it must stay terminated, and nothing may reach it).
-  bool run(std::uint64_t budget) {
+  // A rank that terminated keeps stepping (it must stay terminated, and nothing may reach
+  // it). The moment the first rank concludes, the run must really be over: `expected`
+  // tokens handled, nothing in flight, every rank idle (checked then, before a false
+  // conclusion could heal).
+  bool run(std::uint64_t budget, std::uint64_t expected) {
     std::bernoulli_distribution deliver(0.4);
     std::uniform_int_distribution<int> pick(0, net.size() - 1);
     for (std::uint64_t s = 0; s < budget; ++s) {
       if (deliver(net.rng()) && net.deliver_one()) continue;
       const int r = pick(net.rng());
-      if (ranks[static_cast<std::size_t>(r)]->step()) done[static_cast<std::size_t>(r)] = true;
+      if (ranks[static_cast<std::size_t>(r)]->step() && !done[static_cast<std::size_t>(r)]) {
+        if (std::none_of(done.begin(), done.end(), [](bool d) { return d; })) {
+          EXPECT_EQ(handled(), expected) << "concluded with tokens unhandled";
+          EXPECT_EQ(net.in_flight(), 0u) << "concluded with messages in flight";
+          for (const auto& k : ranks) EXPECT_TRUE(k->idle()) << "concluded with a rank busy";
+        }
+        done[static_cast<std::size_t>(r)] = true;
+      }
       if (std::all_of(done.begin(), done.end(), [](bool d) { return d; })) return true;
     }
     return false;
@@ -46,12 +56,13 @@ struct Sim {
 };
 
 TEST(Termination, FiresOnlyWhenAllWorkIsDoneUnderRandomInterleavings) {
-  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 3000; ++seed) {
     const int p = 1 + static_cast<int>(seed % 5);
-    const int per_rank = static_cast<int>(seed % 3);
-    const std::uint32_t ttl = static_cast<std::uint32_t>(seed % 7);
+    const int per_rank = 1 + static_cast<int>(seed % 4);
+    const std::uint32_t ttl = 6 + static_cast<std::uint32_t>(seed % 6);
     Sim sim(p, seed, per_rank, ttl);
-    ASSERT_TRUE(sim.run(2'000'000)) << "seed " << seed << ": no termination";
+    ASSERT_TRUE(sim.run(2'000'000, test::expected_total(p, per_rank, ttl))) << "seed " << seed << ": no termination";
+    for (const auto& r : sim.ranks) EXPECT_EQ(r->rounds(), sim.ranks[0]->rounds()) << "seed " << seed;
     EXPECT_EQ(sim.handled(), test::expected_total(p, per_rank, ttl)) << "seed " << seed;
     EXPECT_EQ(sim.net.in_flight(), 0u) << "seed " << seed;
     for (int r = 0; r < p; ++r) EXPECT_TRUE(sim.ranks[static_cast<std::size_t>(r)]->idle());
@@ -65,16 +76,16 @@ TEST(Termination, AHeldMessageKeepsIdleRanksRunning) {
     Sim sim(3, seed, 0, 0);
     sim.ranks[0] = std::make_unique<ChainRank>(sim.net.endpoint(0), 40, 6);
     sim.net.hold(0, 1);
-    EXPECT_FALSE(sim.run(200'000)) << "seed " << seed << ": terminated with a message held";
+    std::uint64_t expected = 0;
+    for (const auto& t : test::initial_tokens(0, 40, 6)) expected += test::expected_tokens(t);
+    EXPECT_FALSE(sim.run(200'000, expected)) << "seed " << seed << ": terminated with a message held";
     ASSERT_GT(sim.net.in_flight(), 0u) << "seed " << seed << ": nothing was held";
     for (const auto& r : sim.ranks) {
       EXPECT_TRUE(r->idle()) << "seed " << seed;
       EXPECT_GT(r->rounds(), 4u) << "seed " << seed << ": rounds did not keep running";
     }
     sim.net.release(0, 1);
-    ASSERT_TRUE(sim.run(2'000'000)) << "seed " << seed;
-    std::uint64_t expected = 0;
-    for (const auto& t : test::initial_tokens(0, 40, 6)) expected += test::expected_tokens(t);
+    ASSERT_TRUE(sim.run(2'000'000, expected)) << "seed " << seed;
     EXPECT_EQ(sim.handled(), expected) << "seed " << seed;
   }
 }
