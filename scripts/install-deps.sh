@@ -3,7 +3,8 @@
 #   scripts/install-deps.sh          build + run dependencies
 #   scripts/install-deps.sh --tests  also the test-only dependencies (RapidCheck, GoogleTest,
 #                                    clang and its libFuzzer runtime for the fuzz build,
-#                                    TetGen and Gmsh to produce meshes for the checker tests)
+#                                    TetGen and Gmsh to produce meshes for the checker tests,
+#                                    meshio to write and read files in the io tests)
 #   scripts/install-deps.sh --bench  also the benchmark-only dependencies (CGAL, TetGen)
 set -euo pipefail
 
@@ -11,7 +12,8 @@ pkgs=(build-essential cmake ninja-build pkg-config libgmp-dev libboost-dev libcl
       nlohmann-json3-dev libmetis-dev libopenmpi-dev openmpi-bin)
 for arg in "$@"; do
   case "$arg" in
-    --tests) pkgs+=(librapidcheck-dev libgtest-dev tetgen gmsh clang libclang-rt-14-dev) ;;
+    --tests) pkgs+=(librapidcheck-dev libgtest-dev tetgen gmsh clang libclang-rt-14-dev
+                     python3-meshio python3-numpy) ;;
     --bench) pkgs+=(libcgal-dev tetgen) ;;
     *) echo "install-deps.sh: unknown option '$arg' (use --tests or --bench)" >&2; exit 2 ;;
   esac

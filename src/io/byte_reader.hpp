@@ -1,7 +1,8 @@
 // ByteReader: a bounds-checked cursor over binary data inside a file held in memory (Gmsh
-// binary sections, VTK raw appended data). Values are read in the host's byte order with
-// memcpy (no aliasing, no alignment assumptions); the readers check the file's byte-order
-// marker first and reject a foreign order.
+// binary sections, VTK raw appended data, binary STL and PLY). Values are read with memcpy
+// (no aliasing, no alignment assumptions), in the host's byte order (`get`: Gmsh and VTK
+// files, whose readers check the file's byte-order marker first and reject a foreign order)
+// or in a byte order the format fixes (`get_in`: STL is little-endian, PLY says which).
 //
 // Errors are InputError(file, 0, "at byte offset N: problem; what to do"): a line number
 // makes no sense inside binary data, the absolute byte offset does.
@@ -9,6 +10,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
+#include <bit>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -33,6 +36,20 @@ class ByteReader {
     need(sizeof(T), what);
     T value;
     std::memcpy(&value, data_.data() + pos_, sizeof(T));
+    pos_ += sizeof(T);
+    return value;
+  }
+
+  // A value stored in byte order `order`.
+  template <class T>
+  T get_in(std::endian order, std::string_view what) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    need(sizeof(T), what);
+    unsigned char raw[sizeof(T)];
+    std::memcpy(raw, data_.data() + pos_, sizeof(T));
+    if (order != std::endian::native) std::reverse(raw, raw + sizeof(T));
+    T value;
+    std::memcpy(&value, raw, sizeof(T));
     pos_ += sizeof(T);
     return value;
   }

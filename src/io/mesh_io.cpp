@@ -6,6 +6,7 @@
 #include "io/file_bytes.hpp"
 #include "io/gmsh.hpp"
 #include "io/medit.hpp"
+#include "io/surface.hpp"
 #include "io/mesh_assembly.hpp"
 #include "io/tetgen.hpp"
 
@@ -34,7 +35,10 @@ Plc read_domain(const std::string& path) {
   if (ext == ".poly") return read_tetgen_poly(path);
   if (ext == ".smesh") return read_tetgen_smesh(path);
   if (ext == ".node") return read_tetgen_node_domain(path);
-  throw InputError(path, 0, "unknown domain format: expected a .poly, .smesh or .node file");
+  if (ext == ".off") return surface_to_plc(read_off(path));
+  if (ext == ".stl") return surface_to_plc(read_stl(path));
+  throw InputError(path, 0, "unknown domain format: expected a .poly, .smesh, .node, .off or "
+                            ".stl file");
 }
 
 MeshFormat parse_mesh_format(std::string_view name) {

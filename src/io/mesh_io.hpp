@@ -29,7 +29,8 @@ namespace pdr::io {
 // PREFIX for which PREFIX.ele and PREFIX.node exist.
 MeshData read_mesh(const std::string& path, ReadInfo* info = nullptr);
 
-// `path` is a .poly or .smesh file (a PLC), or a .node file (a bare point set, no facets).
+// `path` is a .poly or .smesh file (a PLC), a .node file (a bare point set, no facets), or
+// a closed surface (.off), converted by surface_to_plc (surface.hpp).
 Plc read_domain(const std::string& path);
 
 enum class MeshFormat { TetGen, Vtu, Msh, Medit };

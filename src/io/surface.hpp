@@ -1,0 +1,83 @@
+// Surface domains: a closed polygonal surface as the surface readers return it (OFF, STL,
+// PLY, the triangles and quadrilaterals of medit .mesh and Gmsh .msh files), and its
+// conversion to the Plc that pdr meshes (paper §1.1: a polyhedral domain bounded by planar
+// polygonal facets).
+//
+// surface_to_plc, in this order, throwing InputError at the first failure (a file without
+// faces is one):
+//   1. duplicate vertices: vertices with exactly equal coordinates (STL repeats every
+//      corner; -0 equals 0) become one; a coordinate that is not finite is an error;
+//   2. non-degenerate faces: a face has at least 3 corners, no vertex twice (after step 1)
+//      and not all corners on one line (exact, orient2d in the three axis projections);
+//   3. closed, edge-manifold surface: every edge joins exactly two faces (an open edge or
+//      an edge of 3+ faces is an error naming the edge and a face that uses it);
+//   4. orientation: faces are reoriented, per connected piece, so that the two faces of
+//      every edge run along it in opposite directions (pdr's Plc has no face orientation;
+//      this only lets step 5 tell a flat joint from a fold); a non-orientable surface is an
+//      error;
+//   5. coplanar facets: two faces sharing an edge with the same marker, each exactly planar,
+//      are merged when every corner of one lies exactly on the plane of the other (exact
+//      orient3d, no tolerance) and they lie on opposite sides of the edge (exact orient2d);
+//      coplanar faces folded onto each other are an error. Each merged region becomes one
+//      facet: its boundary loops as polygons (split at vertices a loop visits twice), and,
+//      for each inner loop (one that runs against the region's orientation), a facet hole
+//      point strictly inside an ear of that loop, verified exactly in every axis projection
+//      in which the ear is not degenerate. A face that is not exactly planar stays a facet
+//      of its own (the domain's planarity tolerance then judges it);
+//   6. vertices left only inside a merged facet (the centre of a fan, the inner vertices of
+//      a finely triangulated plane) are not part of the domain and are dropped, unless
+//      another facet uses them, in which case they become 1-vertex polygons of the facet.
+// The Plc keeps the file order of the remaining vertices and numbers facets in the order of
+// their first face. Facet lines are the lines of their first face; the facet marker is the
+// faces' marker.
+//
+// Messages: text formats report file:line of the face or vertex; binary ones report line 0
+// and the face's number. Faces are numbered from 1 in file order (medit: Triangles, then
+// Quadrilaterals; Gmsh: the order of $Elements); vertices as the file numbers them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "mesh/plc.hpp"
+
+namespace pdr::io {
+
+struct Surface {
+  std::string source;                    // file name, for diagnostics
+  std::vector<Point> points;
+  std::vector<std::size_t> point_lines;  // one per point; 0 in binary files
+  std::vector<std::int64_t> point_ids;   // the file's number of each point (messages)
+  std::vector<std::uint32_t> corners;    // the faces' corners, concatenated
+  std::vector<std::size_t> face_start{0};  // face f is corners[face_start[f], face_start[f+1])
+  std::vector<std::size_t> face_lines;   // one per face; 0 in binary files
+  std::vector<int> face_markers;         // one per face (0: none)
+
+  std::size_t face_count() const { return face_start.size() - 1; }
+  std::span<const std::uint32_t> face(std::size_t f) const {
+    return {corners.data() + face_start[f], face_start[f + 1] - face_start[f]};
+  }
+  void add_point(const Point& p, std::size_t line, std::int64_t id) {
+    points.push_back(p);
+    point_lines.push_back(line);
+    point_ids.push_back(id);
+  }
+  void add_face(std::span<const std::uint32_t> c, std::size_t line, int marker) {
+    corners.insert(corners.end(), c.begin(), c.end());
+    face_start.push_back(corners.size());
+    face_lines.push_back(line);
+    face_markers.push_back(marker);
+  }
+};
+
+// The Plc of a closed, edge-manifold surface; see the steps above.
+Plc surface_to_plc(const Surface& surface);
+
+// Surface readers, one per format; each documents its format in its file header.
+Surface read_off(const std::string& path);  // off_read.cpp
+Surface read_stl(const std::string& path);  // stl_read.cpp
+
+}  // namespace pdr::io

@@ -1,0 +1,281 @@
+// Steps 5-6 of surface_to_plc (surface.hpp): exactly coplanar faces merged into facets,
+// each facet's boundary loops, a hole point for each inner loop, and the vertices the
+// facets leave out. The decisions are exact predicates; the one construction, a hole
+// point, is an ear's centroid checked with exact orient2d before it is used.
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+#include "geom/predicates.hpp"
+#include "io/error.hpp"
+#include "io/surface.hpp"
+#include "io/surface_topology.hpp"
+
+namespace pdr::io {
+
+namespace {
+
+// orient2d of three points projected along `axis`.
+Sign orient_along(const Point& a, const Point& b, const Point& c, int axis) {
+  const auto pa = drop_axis(a, axis), pb = drop_axis(b, axis), pc = drop_axis(c, axis);
+  return orient2d(pa.data(), pb.data(), pc.data());
+}
+
+// An axis along which the face's plane does not project to a line.
+int projection_axis(const SurfaceTopology& t, std::size_t f) {
+  const auto& [a, b, c] = t.plane[f];
+  for (int axis = 0; axis < 3; ++axis)
+    if (orient_along(t.points[a], t.points[b], t.points[c], axis) != Sign::Zero) return axis;
+  throw std::logic_error("surface_facets: a face's plane triple is collinear");
+}
+
+// The turn at the lexicographically smallest corner of a closed polygon projected along
+// `axis`: its orientation when the polygon is simple (Zero: it is not).
+Sign polygon_sign(const SurfaceTopology& t, std::span<const std::uint32_t> loop, int axis) {
+  const std::size_t n = loop.size();
+  std::size_t m = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (drop_axis(t.points[loop[i]], axis) < drop_axis(t.points[loop[m]], axis)) m = i;
+  return orient_along(t.points[loop[(m + n - 1) % n]], t.points[loop[m]],
+                      t.points[loop[(m + 1) % n]], axis);
+}
+
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0u);
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the root is the first face
+  }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+// Step 5's merge test for face f and its neighbour g across the edge from corner i of f.
+bool same_facet(const Surface& s, const SurfaceTopology& t, std::size_t f, std::size_t g,
+                std::size_t i) {
+  if (s.face_markers[f] != s.face_markers[g] || !t.planar[f] || !t.planar[g]) return false;
+  const auto& [a, b, c] = t.plane[f];
+  for (std::uint32_t v : t.face(s, g))
+    if (orient3d(t.points[a], t.points[b], t.points[c], t.points[v]) != Sign::Zero) return false;
+  const int axis = projection_axis(t, f);
+  const Sign sf = polygon_sign(t, t.face(s, f), axis);
+  const Sign sg = polygon_sign(t, t.face(s, g), axis);
+  if (sf == Sign::Zero || sg == Sign::Zero)
+    face_fail(s, sf == Sign::Zero ? f : g, "simple faces: the face's boundary turns back on "
+                                           "itself; fix the face");
+  if (sf != sg) {
+    const auto fc = t.face(s, f);
+    face_fail(s, f, "no folded faces: this face and " + face_name(g) +
+                        " are coplanar and lie on the same side of their common edge from " +
+                        vertex_name(s, t, fc[i]) + " to " +
+                        vertex_name(s, t, fc[(i + 1) % fc.size()]) +
+                        ", so they overlap; remove the doubled faces");
+  }
+  return true;
+}
+
+struct Region {
+  std::vector<std::uint32_t> faces;
+};
+
+// The boundary of a region (faces with a common orientation) as simple closed loops: the
+// directed boundary edges, walked and split at every vertex a walk visits twice.
+std::vector<std::vector<std::uint32_t>> boundary_loops(const Surface& s,
+                                                       const SurfaceTopology& t,
+                                                       const Region& r, UnionFind& uf,
+                                                       std::vector<std::int32_t>& pos) {
+  const std::uint32_t root = uf.find(r.faces[0]);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;  // (from, to)
+  for (std::uint32_t f : r.faces) {
+    const auto c = t.face(s, f);
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (uf.find(t.neighbour[s.face_start[f] + i]) != root)
+        edges.push_back({c[i], c[(i + 1) % c.size()]});
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::uint8_t> used(edges.size(), 0);
+  auto next_edge = [&](std::uint32_t from) -> std::size_t {
+    auto it = std::lower_bound(edges.begin(), edges.end(), std::pair{from, 0u});
+    for (std::size_t k = static_cast<std::size_t>(it - edges.begin());
+         k < edges.size() && edges[k].first == from; ++k)
+      if (!used[k]) return k;
+    return edges.size();
+  };
+  std::vector<std::vector<std::uint32_t>> loops;
+  std::vector<std::uint32_t> path;
+  for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
+    if (used[e0]) continue;
+    path.assign(1, edges[e0].first);
+    pos[edges[e0].first] = 0;
+    while (!path.empty()) {
+      const std::size_t k = next_edge(path.back());
+      if (k == edges.size()) {
+        // Boundary edges balance at every vertex, so a walk can only stop where it began.
+        if (path.size() != 1) throw std::logic_error("surface_facets: unbalanced boundary");
+        pos[path.back()] = -1;
+        break;
+      }
+      used[k] = 1;
+      const std::uint32_t v = edges[k].second;
+      if (pos[v] < 0) {
+        pos[v] = static_cast<std::int32_t>(path.size());
+        path.push_back(v);
+        continue;
+      }
+      const auto from = path.begin() + pos[v];
+      loops.emplace_back(from, path.end());
+      for (auto it = from + 1; it != path.end(); ++it) pos[*it] = -1;
+      path.erase(from + 1, path.end());
+    }
+  }
+  return loops;
+}
+
+// A point strictly inside the inner loop `loop` (orientation `sign` along `axis`): the
+// centroid of an ear, accepted when it lies strictly inside the ear in every axis
+// projection in which the ear is not degenerate (the domain projects facets along one of
+// them). Returns false when no ear gives such a point.
+bool hole_point(const SurfaceTopology& t, const std::vector<std::uint32_t>& loop, int axis,
+                Sign sign, Point& out) {
+  const std::size_t n = loop.size();
+  auto P = [&](std::size_t i) -> const Point& { return t.points[loop[i % n]]; };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point &a = P(i + n - 1), &b = P(i), &c = P(i + 1);
+    if (orient_along(a, b, c, axis) != sign) continue;
+    bool ear = true;
+    for (std::size_t j = 0; j < n && ear; ++j) {
+      if (j == i || j == (i + 1) % n || j == (i + n - 1) % n) continue;
+      const Point& w = P(j);
+      ear = orient_along(a, b, w, axis) == -sign || orient_along(b, c, w, axis) == -sign ||
+            orient_along(c, a, w, axis) == -sign;
+    }
+    if (!ear) continue;
+    Point h;
+    for (int k = 0; k < 3; ++k) h[k] = (a[k] + b[k] + c[k]) / 3;
+    bool inside = true;
+    for (int ax = 0; ax < 3 && inside; ++ax) {
+      const Sign o = orient_along(a, b, c, ax);
+      if (o == Sign::Zero) continue;
+      inside = orient_along(a, b, h, ax) == o && orient_along(b, c, h, ax) == o &&
+               orient_along(c, a, h, ax) == o;
+    }
+    if (inside) {
+      out = h;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Step 5 for one region: its facet, with the region's vertices that no loop visits in
+// `inner`.
+PlcFacet region_facet(const Surface& s, const SurfaceTopology& t, const Region& r,
+                      UnionFind& uf, std::vector<std::int32_t>& pos,
+                      std::vector<std::uint32_t>& inner) {
+  const std::uint32_t f0 = r.faces[0];
+  PlcFacet facet;
+  facet.line = s.face_lines[f0];
+  facet.marker = s.face_markers[f0];
+  if (r.faces.size() == 1) {
+    const auto c = t.face(s, f0);
+    facet.polygons.emplace_back(c.begin(), c.end());
+    return facet;
+  }
+  const int axis = projection_axis(t, f0);
+  const Sign region_sign = polygon_sign(t, t.face(s, f0), axis);
+  facet.polygons = boundary_loops(s, t, r, uf, pos);
+  for (const auto& loop : facet.polygons) {
+    const Sign ls = polygon_sign(t, loop, axis);
+    if (ls == Sign::Zero)
+      face_fail(s, f0, "simple facets: the boundary of the plane facet made of this face and "
+                       "the faces coplanar with it crosses itself; the surface intersects "
+                       "itself there, fix it");
+    if (ls == region_sign) continue;
+    Point h;
+    if (!hole_point(t, loop, axis, -region_sign, h))
+      face_fail(s, f0, "facet holes: no point strictly inside a hole of the plane facet made "
+                       "of this face and the faces coplanar with it was found (the hole is "
+                       "too thin for double precision); enlarge the hole");
+    facet.holes.push_back(h);
+  }
+  for (const auto& loop : facet.polygons)
+    for (std::uint32_t v : loop) pos[v] = 0;
+  for (std::uint32_t f : r.faces)
+    for (std::uint32_t v : t.face(s, f))
+      if (pos[v] < 0) {
+        inner.push_back(v);
+        pos[v] = 0;
+      }
+  for (const auto& loop : facet.polygons)
+    for (std::uint32_t v : loop) pos[v] = -1;
+  for (std::uint32_t v : inner) pos[v] = -1;
+  return facet;
+}
+
+}  // namespace
+
+Plc surface_to_plc(const Surface& s) {
+  if (s.face_count() == 0)
+    throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
+                                  "closed surface of triangles or polygons");
+  const SurfaceTopology t = build_topology(s);
+  const std::size_t nf = s.face_count();
+  UnionFind uf(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::size_t b = s.face_start[f], n = s.face_start[f + 1] - b;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t g = t.neighbour[b + i];
+      if (g > f && uf.find(g) != uf.find(static_cast<std::uint32_t>(f)) &&
+          same_facet(s, t, f, g, i))
+        uf.join(static_cast<std::uint32_t>(f), g);
+    }
+  }
+  std::vector<Region> regions;
+  std::vector<std::uint32_t> region_of(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const std::uint32_t root = uf.find(f);
+    if (root == f) {
+      region_of[f] = static_cast<std::uint32_t>(regions.size());
+      regions.emplace_back();
+    }
+    region_of[f] = region_of[root];
+    regions[region_of[f]].faces.push_back(f);
+  }
+
+  Plc plc;
+  plc.source = s.source;
+  std::vector<std::int32_t> pos(t.points.size(), -1);
+  std::vector<std::vector<std::uint32_t>> inner(regions.size());
+  std::vector<std::uint32_t> uses(t.points.size(), 0);  // facets whose polygons hold it
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    plc.facets.push_back(region_facet(s, t, regions[r], uf, pos, inner[r]));
+    for (const auto& poly : plc.facets.back().polygons)
+      for (std::uint32_t v : poly) uses[v] = 1;
+  }
+  // Step 6: inner vertices another facet uses stay, as 1-vertex polygons; the rest go.
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    for (std::uint32_t v : inner[r])
+      if (uses[v]) plc.facets[r].polygons.push_back({v});
+  std::vector<std::uint32_t> renumber(t.points.size(), 0);
+  for (std::uint32_t v = 0; v < t.points.size(); ++v) {
+    if (!uses[v]) continue;
+    renumber[v] = static_cast<std::uint32_t>(plc.points.size());
+    plc.points.push_back(t.points[v]);
+    plc.point_lines.push_back(s.point_lines[t.input_of[v]]);
+  }
+  for (PlcFacet& facet : plc.facets)
+    for (auto& poly : facet.polygons)
+      for (std::uint32_t& v : poly) v = renumber[v];
+  return plc;
+}
+
+}  // namespace pdr::io

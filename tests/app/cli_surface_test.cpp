@@ -1,0 +1,58 @@
+// End-to-end tests of surface domains (io/surface.hpp) through `pdr mesh` and
+// `pdr check --domain`: a box of 12 triangles meshes exactly as the box of 6 squares, a
+// facet with a hole meshes and passes the check, and a defective surface exits 2 with
+// file:line and writes nothing.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli_support.hpp"
+#include "io/surface_shapes.hpp"
+
+namespace {
+
+using namespace pdr::cli_test;
+using pdr::io::test::off_text;
+
+nlohmann::json mesh_json(const std::string& args) {
+  const Outcome r = run("mesh " + args + " --json", false);
+  EXPECT_EQ(r.code, 0) << r.out;
+  return nlohmann::json::parse(r.out);
+}
+
+TEST_F(Cli, SurfaceBoxOfTrianglesMeshesAsTheBoxOfSquares) {
+  write("tri.off", off_text(pdr::io::test::box_triangles()));
+  write("quad.off", off_text(pdr::io::test::box_squares()));
+  const auto t = mesh_json(path("tri.off") + " -o " + path("t") + " --max-volume 0.01");
+  const auto q = mesh_json(path("quad.off") + " -o " + path("q") + " --max-volume 0.01");
+  EXPECT_EQ(t.at("check"), "pass");
+  EXPECT_EQ(t.at("tets"), q.at("tets"));
+  EXPECT_EQ(t.at("boundary_faces"), q.at("boundary_faces"));
+  EXPECT_EQ(t.at("vertices"), q.at("vertices"));
+  for (const char* m : {"t", "q"}) {
+    const Outcome c = run("check " + path(m) + " --domain " + path("tri.off"));
+    EXPECT_EQ(c.code, 0) << c.out;
+  }
+}
+
+TEST_F(Cli, SurfaceFacetWithAHoleMeshesAndPassesTheCheck) {
+  write("step.off", off_text(pdr::io::test::step()));
+  const auto j = mesh_json(path("step.off") + " -o " + path("s") + " --max-volume 0.1");
+  EXPECT_EQ(j.at("check"), "pass");
+  const Outcome c = run("check " + path("s") + " --domain " + path("step.off"));
+  EXPECT_EQ(c.code, 0) << c.out;
+}
+
+TEST_F(Cli, SurfaceWithAnOpenEdgeExits2AndWritesNothing) {
+  pdr::io::test::Shape open = pdr::io::test::box_squares();
+  open.faces.pop_back();
+  write("open.off", off_text(open));
+  const Outcome r = run("mesh " + path("open.off") + " -o " + path("x"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("open.off:11: face 1: closed surface:"), std::string::npos) << r.out;
+  EXPECT_TRUE(left_behind("x").empty());
+}
+
+}  // namespace

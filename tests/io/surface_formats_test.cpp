@@ -1,0 +1,148 @@
+// The surface readers one format at a time (OFF, STL): hand-written files of each variant
+// the format headers list, read as the box of surface_shapes.hpp, and malformed files
+// rejected with file:line (text) or the face's number (binary).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "io/error.hpp"
+#include "io/mesh_io.hpp"
+#include "io_test_util.hpp"
+#include "surface_shapes.hpp"
+
+namespace pdr::io::test {
+namespace {
+
+Plc read_as(const ScratchDir& dir, const std::string& name, const std::string& bytes) {
+  write_text(dir / name, bytes);
+  return read_domain(dir / name);
+}
+
+// The message of the InputError that reading `bytes` as file `name` throws ("" if none).
+std::string error_of(const std::string& name, const std::string& bytes) {
+  ScratchDir dir;
+  try {
+    (void)read_as(dir, name, bytes);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// `value` as the bytes of a T in byte order `order`.
+template <class T>
+void put(std::string& out, T value, std::endian order) {
+  char raw[sizeof(T)];
+  std::memcpy(raw, &value, sizeof(T));
+  if (order != std::endian::native) std::reverse(raw, raw + sizeof(T));
+  out.append(raw, sizeof(T));
+}
+
+std::string stl_ascii(const Shape& s) {
+  std::ostringstream o;
+  o.precision(17);
+  o << "solid box\n";
+  for (const auto& f : s.faces) {
+    o << "  facet normal 0 0 0\n    outer loop\n";
+    for (std::uint32_t v : f)
+      o << "      vertex " << s.points[v][0] << ' ' << s.points[v][1] << ' ' << s.points[v][2]
+        << '\n';
+    o << "    endloop\n  endfacet\n";
+  }
+  o << "endsolid box\n";
+  return o.str();
+}
+
+std::string stl_binary(const Shape& s) {
+  std::string out = "solid but binary";  // binary writers often begin the header so
+  out.resize(80, ' ');
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(s.faces.size()), std::endian::little);
+  for (const auto& f : s.faces) {
+    for (int k = 0; k < 3; ++k) put<float>(out, 0.0f, std::endian::little);
+    for (std::uint32_t v : f)
+      for (double x : s.points[v]) put<float>(out, static_cast<float>(x), std::endian::little);
+    put<std::uint16_t>(out, 0, std::endian::little);
+  }
+  return out;
+}
+
+void expect_box(const Plc& plc) {
+  EXPECT_EQ(plc.facets.size(), 6u);
+  EXPECT_EQ(plc.points.size(), 8u);
+}
+
+TEST(SurfaceFormats, Off) {
+  ScratchDir dir;
+  expect_box(read_as(dir, "b.off", off_text(box_triangles())));
+  // Counts on the keyword line, comments, colours after coordinates and faces.
+  const Plc plc = read_as(dir, "t.off",
+                          "COFF 4 4 6 # a tetrahedron\n"
+                          "0 0 0 255 0 0 255\n1 0 0 0 0 0 0\n0 1 0 0 0 0 0\n0 0 1 0 0 0 0\n"
+                          "3 0 2 1 0.5 0.5 0.5\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  EXPECT_EQ(plc.facets.size(), 4u);
+  EXPECT_EQ(plc.point_lines[1], 3u);
+  EXPECT_EQ(plc.facets[3].line, 9u);
+  std::string m = error_of("x.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  EXPECT_NE(m.find("x.off:6: corner index 3 is out of range"), std::string::npos) << m;
+  m = error_of("x.off", "4OFF\n");
+  EXPECT_NE(m.find("x.off:1: expected the keyword OFF"), std::string::npos) << m;
+  m = error_of("x.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n");
+  EXPECT_NE(m.find("x.off:7: unexpected '3' after the last face"), std::string::npos) << m;
+}
+
+TEST(SurfaceFormats, StlAscii) {
+  ScratchDir dir;
+  expect_box(read_as(dir, "b.stl", stl_ascii(box_triangles())));
+  // Two solids, upper-case keywords, CRLF line ends: the box split in two solids.
+  std::string two = stl_ascii(box_triangles());
+  const std::size_t mid = two.find("  facet", two.size() / 2);
+  two.insert(mid, "endsolid a\r\nSOLID b\r\n");
+  expect_box(read_as(dir, "c.stl", two));
+  // Quads as 4-vertex loops.
+  expect_box(read_as(dir, "q.stl", stl_ascii(box_squares())));
+
+  std::string bad = stl_ascii(box_triangles());
+  bad.replace(bad.find("endloop"), 7, "endlop");
+  std::string m = error_of("x.stl", bad);
+  EXPECT_NE(m.find("x.stl:7: expected 'vertex <x> <y> <z>' or 'endloop' of face 1"),
+            std::string::npos) << m;
+  bad = stl_ascii(box_triangles());
+  bad.replace(bad.find("vertex 0 0 0"), 12, "vertex 0 inf 0");
+  m = error_of("x.stl", bad);
+  EXPECT_NE(m.find("x.stl:4:"), std::string::npos) << m;
+  m = error_of("x.stl", "hello\n");
+  EXPECT_NE(m.find("x.stl:1: an ASCII STL file starts with 'solid'"), std::string::npos) << m;
+}
+
+TEST(SurfaceFormats, StlBinary) {
+  ScratchDir dir;
+  const std::string bin = stl_binary(box_triangles());
+  ASSERT_EQ(bin.size(), 84u + 50u * 12u);
+  expect_box(read_as(dir, "b.stl", bin));
+
+  // A NaN in the 5th triangle's second corner: the face is named, no line.
+  std::string nan = bin;
+  const std::size_t at = 84 + 4 * 50 + 12 + 12 + 4;
+  const float q = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(nan.data() + at, &q, 4);
+  std::string m = error_of("x.stl", nan);
+  EXPECT_NE(m.find("x.stl: face 5: a corner has a coordinate that is not a finite number"),
+            std::string::npos) << m;
+  // Truncated: the size no longer matches the count, and the header does not say solid.
+  std::string cut = bin.substr(0, bin.size() - 10);
+  cut.replace(0, 5, "heade");
+  m = error_of("x.stl", cut);
+  EXPECT_NE(m.find("binary STL: the header declares 12 triangles"), std::string::npos) << m;
+  // An open surface from a binary file: the face is named by number.
+  Shape open = box_triangles();
+  open.faces.pop_back();
+  m = error_of("x.stl", stl_binary(open));
+  EXPECT_NE(m.find("x.stl: face "), std::string::npos) << m;
+  EXPECT_NE(m.find("closed surface"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace pdr::io::test

@@ -1,0 +1,186 @@
+// Surface domains (io/surface.hpp): exactly coplanar faces merge into facets (a box of 12
+// triangles is the box of 6 squares; a 2x2 grid per side loses its inner vertices; a ring
+// of triangles becomes a facet with a hole point inside the hole), duplicate vertices
+// merge, and every defect named in surface.hpp is an InputError naming the face and line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "io/error.hpp"
+#include "io/mesh_io.hpp"
+#include "io/surface.hpp"
+#include "io_test_util.hpp"
+#include "surface_shapes.hpp"
+
+namespace pdr::io::test {
+namespace {
+
+// Each facet as the set of its polygons' coordinates: independent of numbering.
+std::multiset<std::set<Point>> facet_sets(const Plc& plc) {
+  std::multiset<std::set<Point>> out;
+  for (const PlcFacet& f : plc.facets) {
+    std::set<Point> s;
+    for (const auto& poly : f.polygons)
+      for (std::uint32_t v : poly) s.insert(plc.points[v]);
+    out.insert(s);
+  }
+  return out;
+}
+
+Plc read_off_text(const ScratchDir& dir, const std::string& text) {
+  write_text(dir / "s.off", text);
+  return read_domain(dir / "s.off");
+}
+
+// The message of the InputError that reading `text` as OFF throws ("" when none).
+std::string off_error(const std::string& text) {
+  ScratchDir dir;
+  try {
+    (void)read_off_text(dir, text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Surface, TwelveTrianglesAreTheBoxOfSixSquares) {
+  ScratchDir dir;
+  const Plc tri = read_off_text(dir, off_text(box_triangles()));
+  const Plc quad = read_off_text(dir, off_text(box_squares()));
+  EXPECT_EQ(tri.facets.size(), 6u);
+  EXPECT_EQ(quad.facets.size(), 6u);
+  EXPECT_EQ(tri.points.size(), 8u);
+  EXPECT_EQ(facet_sets(tri), facet_sets(quad));
+  for (const PlcFacet& f : tri.facets) {
+    ASSERT_EQ(f.polygons.size(), 1u);
+    EXPECT_EQ(f.polygons[0].size(), 4u);
+    EXPECT_TRUE(f.holes.empty());
+  }
+}
+
+TEST(Surface, GridSidesLoseTheirInnerVertices) {
+  ScratchDir dir;
+  const Shape g = box_grid();
+  ASSERT_EQ(g.points.size(), 26u);
+  const Plc plc = read_off_text(dir, off_text(g));
+  EXPECT_EQ(plc.facets.size(), 6u);
+  EXPECT_EQ(plc.points.size(), 20u);  // 8 corners + 12 edge midpoints
+  for (const PlcFacet& f : plc.facets) {
+    ASSERT_EQ(f.polygons.size(), 1u);
+    EXPECT_EQ(f.polygons[0].size(), 8u);
+  }
+  for (const Point& p : plc.points)  // no side centre is left
+    EXPECT_NE(std::count(p.begin(), p.end(), 0.5), 2) << p[0] << ' ' << p[1] << ' ' << p[2];
+}
+
+TEST(Surface, RingBecomesAFacetWithAHole) {
+  ScratchDir dir;
+  const Plc plc = read_off_text(dir, off_text(step()));
+  // bottom, 4 big sides, the ring, 4 small sides, the small top
+  EXPECT_EQ(plc.facets.size(), 11u);
+  std::size_t rings = 0;
+  for (const PlcFacet& f : plc.facets) {
+    if (f.polygons.size() == 1) {
+      EXPECT_TRUE(f.holes.empty());
+      continue;
+    }
+    ++rings;
+    ASSERT_EQ(f.polygons.size(), 2u);
+    ASSERT_EQ(f.holes.size(), 1u);
+    const Point& h = f.holes[0];
+    EXPECT_EQ(h[2], 1.0);
+    EXPECT_GT(h[0], 0.5);
+    EXPECT_LT(h[0], 1.5);
+    EXPECT_GT(h[1], 0.5);
+    EXPECT_LT(h[1], 1.5);
+  }
+  EXPECT_EQ(rings, 1u);
+}
+
+TEST(Surface, RepeatedCornersMergeIntoOneVertex) {
+  // Every triangle with its own three vertices, as STL stores them; -0 equals 0.
+  const Shape t = box_triangles();
+  Shape soup;
+  for (const auto& f : t.faces) {
+    std::vector<std::uint32_t> c;
+    for (std::uint32_t v : f) {
+      c.push_back(static_cast<std::uint32_t>(soup.points.size()));
+      Point p = t.points[v];
+      if (soup.points.size() % 2 == 0) p[0] = p[0] == 0 ? -0.0 : p[0];
+      soup.points.push_back(p);
+    }
+    soup.faces.push_back(c);
+  }
+  ScratchDir dir;
+  const Plc plc = read_off_text(dir, off_text(soup));
+  EXPECT_EQ(plc.points.size(), 8u);
+  EXPECT_EQ(plc.facets.size(), 6u);
+}
+
+TEST(Surface, MarkersSeparateFacets) {
+  const Shape t = box_triangles();
+  Surface s;
+  s.source = "m";
+  for (std::size_t i = 0; i < t.points.size(); ++i)
+    s.add_point(t.points[i], i + 1, static_cast<std::int64_t>(i));
+  for (std::size_t f = 0; f < t.faces.size(); ++f)
+    s.add_face(t.faces[f], 100 + f, f == 0 ? 7 : 1);  // half of the bottom differs
+  const Plc plc = surface_to_plc(s);
+  EXPECT_EQ(plc.facets.size(), 7u);
+  EXPECT_EQ(plc.facets[0].marker, 7);
+  EXPECT_EQ(plc.facets[0].line, 100u);
+}
+
+TEST(Surface, DefectsAreNamedWithTheirLine) {
+  // An open box: the side x = 1 is missing (faces on lines 11.. of the OFF text).
+  Shape open = box_squares();
+  open.faces.pop_back();
+  std::string m = off_error(off_text(open));
+  EXPECT_NE(m.find("s.off:11: face 1: closed surface:"), std::string::npos) << m;
+  EXPECT_NE(m.find("close it"), std::string::npos) << m;
+
+  // A fin: a triangle hanging from an edge of the box makes that edge join 3 faces.
+  Shape fin = box_triangles();
+  fin.points.push_back({0.5, -1, 0.5});
+  fin.faces.push_back({0, 1, 8});
+  fin.faces.push_back({0, 8, 1});
+  m = off_error(off_text(fin));
+  EXPECT_NE(m.find("edge-manifold surface:"), std::string::npos) << m;
+  EXPECT_NE(m.find("joins 4 faces"), std::string::npos) << m;
+
+  // A sliver triangle with three collinear corners.
+  Shape flat = box_squares();
+  flat.points.push_back({0.5, 0, 0});
+  flat.faces.push_back({0, 8, 1});
+  m = off_error(off_text(flat));
+  EXPECT_NE(m.find("s.off:18: face 7: non-degenerate faces: all corners"), std::string::npos)
+      << m;
+
+  // A corner repeated through a duplicate vertex.
+  Shape twice = box_squares();
+  twice.points.push_back({0, 0, 0});
+  twice.faces[0] = {0, 2, 3, 8};
+  m = off_error(off_text(twice));
+  EXPECT_NE(m.find("face 1: non-degenerate faces: the face visits vertex 0"), std::string::npos)
+      << m;
+
+  // Two copies of one triangle close each other's edges but lie on top of each other.
+  m = off_error("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n");
+  EXPECT_NE(m.find("no folded faces"), std::string::npos) << m;
+
+  // Not finite, out of range, too few corners.
+  m = off_error("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_NE(m.find("s.off:4:"), std::string::npos) << m;
+  m = off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  EXPECT_NE(m.find("s.off:6: corner index 3 is out of range"), std::string::npos) << m;
+  m = off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n");
+  EXPECT_NE(m.find("s.off:6: face 1: non-degenerate faces: the face has 2 corners"),
+            std::string::npos)
+      << m;
+  m = off_error("4OFF\n");
+  EXPECT_NE(m.find("s.off:1: expected the keyword OFF"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace pdr::io::test
