@@ -37,8 +37,9 @@ Plc read_domain(const std::string& path) {
   if (ext == ".node") return read_tetgen_node_domain(path);
   if (ext == ".off") return surface_to_plc(read_off(path));
   if (ext == ".stl") return surface_to_plc(read_stl(path));
-  throw InputError(path, 0, "unknown domain format: expected a .poly, .smesh, .node, .off or "
-                            ".stl file");
+  if (ext == ".ply") return surface_to_plc(read_ply(path));
+  throw InputError(path, 0, "unknown domain format: expected a .poly, .smesh, .node, .off, "
+                            ".stl or .ply file");
 }
 
 MeshFormat parse_mesh_format(std::string_view name) {

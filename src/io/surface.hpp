@@ -79,5 +79,6 @@ Plc surface_to_plc(const Surface& surface);
 // Surface readers, one per format; each documents its format in its file header.
 Surface read_off(const std::string& path);  // off_read.cpp
 Surface read_stl(const std::string& path);  // stl_read.cpp
+Surface read_ply(const std::string& path);  // ply_read.cpp
 
 }  // namespace pdr::io

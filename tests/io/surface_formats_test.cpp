@@ -1,4 +1,4 @@
-// The surface readers one format at a time (OFF, STL): hand-written files of each variant
+// The surface readers one format at a time (OFF, STL, PLY): hand-written files of each variant
 // the format headers list, read as the box of surface_shapes.hpp, and malformed files
 // rejected with file:line (text) or the face's number (binary).
 #include <gtest/gtest.h>
@@ -65,6 +65,43 @@ std::string stl_binary(const Shape& s) {
     for (std::uint32_t v : f)
       for (double x : s.points[v]) put<float>(out, static_cast<float>(x), std::endian::little);
     put<std::uint16_t>(out, 0, std::endian::little);
+  }
+  return out;
+}
+
+// The shape as PLY in `format` (ascii, binary_little_endian, binary_big_endian): vertices
+// with z before y and an extra colour, an extra "edge" element between vertices and faces,
+// float coordinates, uchar counts and int indices.
+std::string ply(const Shape& s, const std::string& format) {
+  std::ostringstream h;
+  h << "ply\nformat " << format << " 1.0\ncomment by hand\nelement vertex " << s.points.size()
+    << "\nproperty float x\nproperty float z\nproperty float y\nproperty uchar red\n"
+    << "element edge 1\nproperty int vertex1\nproperty int vertex2\n"
+    << "element face " << s.faces.size() << "\nproperty list uchar int vertex_indices\n"
+    << "end_header\n";
+  std::string out = h.str();
+  if (format == "ascii") {
+    std::ostringstream d;
+    for (const Point& p : s.points) d << p[0] << ' ' << p[2] << ' ' << p[1] << " 255\n";
+    d << "0 1\n";
+    for (const auto& f : s.faces) {
+      d << f.size();
+      for (std::uint32_t v : f) d << ' ' << v;
+      d << '\n';
+    }
+    return out + d.str();
+  }
+  const std::endian order =
+      format == "binary_big_endian" ? std::endian::big : std::endian::little;
+  for (const Point& p : s.points) {
+    for (int k : {0, 2, 1}) put<float>(out, static_cast<float>(p[k]), order);
+    put<std::uint8_t>(out, 255, order);
+  }
+  put<std::int32_t>(out, 0, order);
+  put<std::int32_t>(out, 1, order);
+  for (const auto& f : s.faces) {
+    put<std::uint8_t>(out, static_cast<std::uint8_t>(f.size()), order);
+    for (std::uint32_t v : f) put<std::int32_t>(out, static_cast<std::int32_t>(v), order);
   }
   return out;
 }
@@ -142,6 +179,43 @@ TEST(SurfaceFormats, StlBinary) {
   m = error_of("x.stl", stl_binary(open));
   EXPECT_NE(m.find("x.stl: face "), std::string::npos) << m;
   EXPECT_NE(m.find("closed surface"), std::string::npos) << m;
+}
+
+TEST(SurfaceFormats, Ply) {
+  ScratchDir dir;
+  for (const char* format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+    SCOPED_TRACE(format);
+    expect_box(read_as(dir, "t.ply", ply(box_triangles(), format)));
+    expect_box(read_as(dir, "q.ply", ply(box_squares(), format)));
+  }
+  const Plc a = read_as(dir, "a.ply", ply(box_triangles(), "ascii"));
+  EXPECT_EQ(a.points[2], (Point{0, 1, 0}));  // y and z where the header says
+  EXPECT_EQ(a.point_lines[0], 15u);
+  EXPECT_EQ(a.facets[0].line, 24u);
+
+  // Out of range index (ASCII: the face's line; binary: its number).
+  Shape bad = box_triangles();
+  bad.faces[2][1] = 8;
+  std::string m = error_of("x.ply", ply(bad, "ascii"));
+  EXPECT_NE(m.find("x.ply:26: face 3: corner index 8 is out of range"), std::string::npos) << m;
+  m = error_of("x.ply", ply(bad, "binary_big_endian"));
+  EXPECT_NE(m.find("x.ply: face 3: corner index 8"), std::string::npos) << m;
+  // Truncated and overlong binary data.
+  const std::string bin = ply(box_triangles(), "binary_little_endian");
+  m = error_of("x.ply", bin.substr(0, bin.size() - 3));
+  EXPECT_NE(m.find("x.ply: at byte offset"), std::string::npos) << m;
+  EXPECT_NE(m.find("truncated"), std::string::npos) << m;
+  m = error_of("x.ply", bin + "xx");
+  EXPECT_NE(m.find("2 bytes are left after the last element"), std::string::npos) << m;
+  // Header errors.
+  m = error_of("x.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty long x\n");
+  EXPECT_NE(m.find("x.ply:4: unknown PLY property type 'long'"), std::string::npos) << m;
+  m = error_of("x.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n"
+                        "element face 0\nproperty list uchar int vertex_indices\nend_header\n");
+  EXPECT_NE(m.find("the vertex element needs the properties x, y and z"), std::string::npos)
+      << m;
+  m = error_of("x.ply", "PLY\n");
+  EXPECT_NE(m.find("x.ply:1: a PLY file starts with the line 'ply'"), std::string::npos) << m;
 }
 
 }  // namespace

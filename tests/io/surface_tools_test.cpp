@@ -75,9 +75,11 @@ m = meshio.Mesh(p, [("triangle", t)])
 m.write("a.off")
 m.write("a.stl", binary=False)
 m.write("b.stl", binary=True)
+m.write("a.ply", binary=False)
+m.write("b.ply", binary=True)
 )");
   ASSERT_EQ(run_in(dir.str(), "/usr/bin/python3 w.py"), 0) << read_text(dir / "log.txt");
-  for (const char* file : {"a.off", "a.stl", "b.stl"}) {
+  for (const char* file : {"a.off", "a.stl", "b.stl", "a.ply", "b.ply"}) {
     SCOPED_TRACE(file);
     const Plc plc = read_domain(dir / file);
     EXPECT_EQ(plc.facets.size(), 6u);
