@@ -11,6 +11,8 @@
 // elementary entity ($Entities in 4.1, the first element tag in 2.2), or 0 when it has
 // none; MeshData gets markers only when one is non-zero. Point markers are not represented.
 // Binary files must be in the host's byte order (the file's int 1 marker is checked).
+// As a surface domain (read_gmsh_surface, surface.hpp) the same sections give the
+// triangles and quadrilaterals (types 3, 10, 16) instead, and tetrahedra are ignored.
 // Other sections ($PhysicalNames, $NodeData, $Periodic, ...) are skipped.
 //
 // Orientation, found by experiment with Gmsh 4.8.4 (`gmsh -3` on an OpenCASCADE box and on

@@ -7,13 +7,14 @@ namespace pdr::io {
 
 GmshType gmsh_type(std::int64_t type) {
   using K = GmshKind;
-  // Gmsh element types 1..31 (manual §10.2): node counts, and which are tets/triangles.
+  // Gmsh element types 1..31 (manual §10.2): node counts, and which are tets, triangles,
+  // quadrilaterals (3, 10, 16; the higher-order quadrilaterals above 31 are Other).
   static constexpr GmshType kTable[] = {
       {K::Unknown, 0},                                                         // 0
-      {K::Other, 2},  {K::Tri, 3},    {K::Other, 4},  {K::Tet, 4},   {K::Other, 8},   // 1-5
-      {K::Other, 6},  {K::Other, 5},  {K::Other, 3},  {K::Tri, 6},   {K::Other, 9},   // 6-10
+      {K::Other, 2},  {K::Tri, 3},    {K::Quad, 4},   {K::Tet, 4},   {K::Other, 8},   // 1-5
+      {K::Other, 6},  {K::Other, 5},  {K::Other, 3},  {K::Tri, 6},   {K::Quad, 9},    // 6-10
       {K::Tet, 10},   {K::Other, 27}, {K::Other, 18}, {K::Other, 14}, {K::Other, 1},  // 11-15
-      {K::Other, 8},  {K::Other, 20}, {K::Other, 15}, {K::Other, 13}, {K::Tri, 9},    // 16-20
+      {K::Quad, 8},   {K::Other, 20}, {K::Other, 15}, {K::Other, 13}, {K::Tri, 9},    // 16-20
       {K::Tri, 10},   {K::Tri, 12},   {K::Tri, 15},   {K::Tri, 15},  {K::Tri, 21},    // 21-25
       {K::Other, 4},  {K::Other, 5},  {K::Other, 6},  {K::Tet, 20},  {K::Tet, 35},    // 26-30
       {K::Tet, 56},                                                            // 31
@@ -66,24 +67,40 @@ std::uint32_t GmshNodes::find(std::uint64_t tag) const {
   return (it != sparse_.end() && it->first == tag) ? it->second : kMissing;
 }
 
-GmshSink::GmshSink(std::vector<Point>&& points) : roles_(points.size()) {
+GmshSink::GmshSink(std::vector<Point>&& points, bool surface)
+    : roles_(points.size()), surface_mode_(surface) {
   mesh_.points = std::move(points);
 }
 
-void GmshSink::add(const GmshType& type, const std::uint32_t* idx, int marker) {
-  if (type.kind == GmshKind::Tet) {
+void GmshSink::add(const GmshType& type, const std::uint32_t* idx, int marker,
+                   std::size_t line) {
+  if (!wants(type.kind)) {
+    ++skipped_;
+    return;
+  }
+  if (surface_mode_) {
+    const std::size_t corners = type.kind == GmshKind::Tri ? 3 : 4;
+    surface_.add_face({idx, corners}, line, marker);
+  } else if (type.kind == GmshKind::Tet) {
     mesh_.tets.push_back({idx[0], idx[1], idx[2], idx[3]});
     mesh_.tet_regions.push_back(marker);
     for (int k = 0; k < 4; ++k) roles_.corner(idx[k]);
     for (int k = 4; k < type.nodes; ++k) roles_.high_order(idx[k]);
-  } else if (type.kind == GmshKind::Tri) {
+  } else {
     mesh_.faces.push_back({idx[0], idx[1], idx[2]});
     mesh_.face_markers.push_back(marker);
     for (int k = 0; k < 3; ++k) roles_.corner(idx[k]);
     for (int k = 3; k < type.nodes; ++k) roles_.high_order(idx[k]);
-  } else {
-    ++skipped_;
   }
+}
+
+Surface GmshSink::finish_surface(const std::string& path, const GmshNodes& nodes,
+                                 bool binary) {
+  surface_.source = path;
+  for (std::size_t i = 0; i < mesh_.points.size(); ++i)
+    surface_.add_point(mesh_.points[i], binary ? 0 : nodes.where(i),
+                       static_cast<std::int64_t>(nodes.tag(i)));
+  return std::move(surface_);
 }
 
 MeshData GmshSink::finish(ReadInfo* info, std::string& problem) {

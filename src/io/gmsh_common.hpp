@@ -1,5 +1,6 @@
 // Parts shared by the Gmsh 2.2 and 4.1 readers (internal to pdr_io): the element type
-// table, the node tag -> point index map, and the element sink that builds MeshData.
+// table, the node tag -> point index map, and the element sink that builds MeshData (or,
+// for a surface domain, a Surface of the triangles and quadrilaterals).
 #pragma once
 
 #include <cstddef>
@@ -9,11 +10,12 @@
 
 #include "io/mesh_assembly.hpp"
 #include "io/read_info.hpp"
+#include "io/surface.hpp"
 #include "mesh/mesh_data.hpp"
 
 namespace pdr::io {
 
-enum class GmshKind : std::uint8_t { Unknown, Tet, Tri, Other };
+enum class GmshKind : std::uint8_t { Unknown, Tet, Tri, Quad, Other };
 
 struct GmshType {
   GmshKind kind = GmshKind::Unknown;
@@ -50,21 +52,31 @@ class GmshNodes {
   bool use_dense_ = true;
 };
 
-// Collects elements into a MeshData. Node indices must already be mapped.
+// Collects elements into a MeshData (tets and triangles), or with `surface` into a Surface
+// (triangles and quadrilaterals, in file order). Node indices must already be mapped.
 class GmshSink {
  public:
-  explicit GmshSink(std::vector<Point>&& points);
-  // Adds an element of `type` with mapped nodes `idx[0..n)` and marker (physical tag).
-  void add(const GmshType& type, const std::uint32_t* idx, int marker);
+  GmshSink(std::vector<Point>&& points, bool surface);
+  // Whether elements of this kind are read (the others are skipped).
+  bool wants(GmshKind kind) const {
+    return surface_mode_ ? kind == GmshKind::Tri || kind == GmshKind::Quad
+                         : kind == GmshKind::Tet || kind == GmshKind::Tri;
+  }
+  // Adds an element of `type` with mapped nodes `idx[0..n)`, marker (physical tag) and
+  // source line (0 in binary files).
+  void add(const GmshType& type, const std::uint32_t* idx, int marker, std::size_t line);
   void skip() { ++skipped_; }
-  // Finishes the mesh; `fail` is called with a message when the file has no tets but
-  // other elements.
+  // Finishes the mesh; `problem` is set when the file has no tets but other elements.
   MeshData finish(ReadInfo* info, std::string& problem);
+  // Finishes the surface: points with the nodes' tags and (ASCII) lines.
+  Surface finish_surface(const std::string& path, const GmshNodes& nodes, bool binary);
 
  private:
   MeshData mesh_;
+  Surface surface_;
   PointRoles roles_;
   std::size_t skipped_ = 0;
+  bool surface_mode_;
 };
 
 }  // namespace pdr::io

@@ -1,9 +1,11 @@
 // Gmsh reader: $MeshFormat, the section loop, and the version 2.2 sections ($Nodes and
-// $Elements, ASCII and binary). See gmsh.hpp for what is read and the conventions.
+// $Elements, ASCII and binary). See gmsh.hpp for what is read and the conventions; the
+// same sections give a surface domain (read_gmsh_surface, surface.hpp).
 //
 // MSH 2.2 layout: $Nodes "<n>" then n x "<tag> <x> <y> <z>" (binary: int tag, 3 doubles);
 // $Elements "<m>" then m x "<id> <type> <ntags> <tags...> <nodes...>" (binary: blocks of
 // int <type> <count> <ntags>, then count x int <id> <tags...> <nodes...>).
+#include <optional>
 #include <string>
 
 #include "io/byte_reader.hpp"
@@ -92,7 +94,7 @@ void read_elements_v2(TextScanner& s, const GmshFormat& f, const GmshNodes& node
           const auto tag = b.get<std::int32_t>("an element node");
           idx[k] = map_node(nodes, static_cast<std::uint64_t>(tag < 0 ? 0 : tag), id, fail);
         }
-        sink.add(type, idx, physical);
+        sink.add(type, idx, physical, 0);
       }
       done += static_cast<std::size_t>(count);
     }
@@ -103,7 +105,7 @@ void read_elements_v2(TextScanner& s, const GmshFormat& f, const GmshNodes& node
       s.require_line("element " + std::to_string(e + 1) + " of " + std::to_string(m));
       const auto id = s.number<std::int64_t>("the element id");
       const GmshType type = gmsh_type(s.number<std::int64_t>("the element type"));
-      if (type.kind == GmshKind::Unknown || type.kind == GmshKind::Other) {
+      if (!sink.wants(type.kind)) {
         (void)s.rest_of_line();
         sink.skip();
         continue;
@@ -117,7 +119,7 @@ void read_elements_v2(TextScanner& s, const GmshFormat& f, const GmshNodes& node
       for (int k = 0; k < type.nodes; ++k)
         idx[k] = map_node(nodes, s.number<std::uint64_t>("an element node"), id, fail);
       s.end_line("the element's nodes");
-      sink.add(type, idx, physical);
+      sink.add(type, idx, physical, s.line());
     }
   }
   expect_section_end(s, "$Elements");
@@ -168,14 +170,23 @@ void skip_section(TextScanner& s, std::string_view name) {
 
 }  // namespace
 
-MeshData read_gmsh(const std::string& path, ReadInfo* info) {
-  const std::string bytes = read_file_bytes(path);
-  TextScanner s(bytes, path, '\0');
-  const GmshFormat f = read_mesh_format(s);
+namespace {
+
+// The sections of a whole file; `sink` holds its elements.
+struct GmshFile {
+  GmshFormat format;
   GmshNodes nodes;
+  std::optional<GmshSink> sink;
+};
+
+GmshFile read_sections(const std::string& path, const std::string& bytes, bool surface) {
+  TextScanner s(bytes, path, '\0');
+  GmshFile file;
+  file.format = read_mesh_format(s);
+  const GmshFormat& f = file.format;
+  GmshNodes& nodes = file.nodes;
   GmshPhysicals physicals;
-  bool have_nodes = false, have_elements = false;
-  MeshData mesh;
+  bool have_nodes = false;
   while (s.next_line()) {
     const std::string_view name = s.token("a section name");
     if (name.empty() || name[0] != '$')
@@ -195,23 +206,36 @@ MeshData read_gmsh(const std::string& path, ReadInfo* info) {
       have_nodes = true;
     } else if (name == "$Elements") {
       if (!have_nodes) s.fail("$Elements comes before $Nodes; Gmsh writes $Nodes first");
-      if (have_elements) s.fail("a second $Elements section is not supported");
-      GmshSink sink(std::move(nodes.points()));
-      if (f.major == 2) read_elements_v2(s, f, nodes, sink);
-      else read_elements_v4(s, f, nodes, physicals, sink);
-      std::string problem;
-      mesh = sink.finish(info, problem);
-      if (!problem.empty()) s.fail_at(0, problem);
-      have_elements = true;
+      if (file.sink) s.fail("a second $Elements section is not supported");
+      file.sink.emplace(std::move(nodes.points()), surface);
+      if (f.major == 2) read_elements_v2(s, f, nodes, *file.sink);
+      else read_elements_v4(s, f, nodes, physicals, *file.sink);
     } else if (name == "$Entities" && f.major == 4) {
       read_entities_v4(s, f, physicals);
     } else {
       skip_section(s, name);
     }
   }
-  if (!have_elements)
+  if (!file.sink)
     s.fail_at(0, "no $Elements section; the file holds no mesh, mesh the volume (gmsh -3)");
+  return file;
+}
+
+}  // namespace
+
+MeshData read_gmsh(const std::string& path, ReadInfo* info) {
+  const std::string bytes = read_file_bytes(path);
+  GmshFile file = read_sections(path, bytes, false);
+  std::string problem;
+  MeshData mesh = file.sink->finish(info, problem);
+  if (!problem.empty()) throw InputError(path, 0, problem);
   return mesh;
+}
+
+Surface read_gmsh_surface(const std::string& path) {
+  const std::string bytes = read_file_bytes(path);
+  GmshFile file = read_sections(path, bytes, true);
+  return file.sink->finish_surface(path, file.nodes, file.format.binary);
 }
 
 }  // namespace pdr::io

@@ -194,14 +194,14 @@ void read_elements_v4(TextScanner& s, const GmshFormat& f, const GmshNodes& node
       const int marker = physical_of(dim, entity);
       for (std::uint64_t e = 0; e < n; ++e) {
         const auto id = static_cast<std::int64_t>(b.get_uint(f.data_size, "an element tag"));
-        if (type.kind != GmshKind::Tet && type.kind != GmshKind::Tri) {
+        if (!sink.wants(type.kind)) {
           b.skip(per - f.data_size, "the element's nodes");
           sink.skip();
           continue;
         }
         for (int k = 0; k < type.nodes; ++k)
           idx[k] = map_node(nodes, b.get_uint(f.data_size, "an element node"), id, fail);
-        sink.add(type, idx, marker);
+        sink.add(type, idx, marker, 0);
       }
       total += n;
     }
@@ -225,7 +225,7 @@ void read_elements_v4(TextScanner& s, const GmshFormat& f, const GmshNodes& node
         s.fail("the element blocks hold more than the " + std::to_string(head[1]) +
                " elements declared; fix the element count");
       const int marker = physical_of(dim, entity);
-      const bool wanted = type.kind == GmshKind::Tet || type.kind == GmshKind::Tri;
+      const bool wanted = sink.wants(type.kind);
       for (std::size_t e = 0; e < n; ++e) {
         s.require_line("an element line '<tag> <nodes...>'");
         if (!wanted) {
@@ -237,7 +237,7 @@ void read_elements_v4(TextScanner& s, const GmshFormat& f, const GmshNodes& node
         for (int k = 0; k < type.nodes; ++k)
           idx[k] = map_node(nodes, s.number<std::uint64_t>("an element node"), id, fail);
         s.end_line("the element's nodes");
-        sink.add(type, idx, marker);
+        sink.add(type, idx, marker, s.line());
       }
       total += n;
     }

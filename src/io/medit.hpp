@@ -8,6 +8,8 @@
 // by their corners (the mid-edge nodes dropped, ReadInfo); Edges, Quadrilaterals, Hexahedra,
 // Prisms, Pyramids and the Corners/Ridges/Required*/Normals/Tangents lists are skipped
 // (elements counted in ReadInfo). A file with no tetrahedra but other elements is rejected.
+// As a surface domain (read_medit_surface, surface.hpp) the Triangles and then the
+// Quadrilaterals are the faces, their refs the markers, and tetrahedra are ignored.
 // Binary .meshb is not supported.
 //
 // Markers: a vertex ref is the point marker, a triangle ref the face marker, a tet ref the

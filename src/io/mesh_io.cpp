@@ -38,8 +38,10 @@ Plc read_domain(const std::string& path) {
   if (ext == ".off") return surface_to_plc(read_off(path));
   if (ext == ".stl") return surface_to_plc(read_stl(path));
   if (ext == ".ply") return surface_to_plc(read_ply(path));
+  if (ext == ".msh") return surface_to_plc(read_gmsh_surface(path));
+  if (ext == ".mesh") return surface_to_plc(read_medit_surface(path));
   throw InputError(path, 0, "unknown domain format: expected a .poly, .smesh, .node, .off, "
-                            ".stl or .ply file");
+                            ".stl, .ply, .mesh or .msh file");
 }
 
 MeshFormat parse_mesh_format(std::string_view name) {

@@ -30,7 +30,8 @@ namespace pdr::io {
 MeshData read_mesh(const std::string& path, ReadInfo* info = nullptr);
 
 // `path` is a .poly or .smesh file (a PLC), a .node file (a bare point set, no facets), or
-// a closed surface (.off), converted by surface_to_plc (surface.hpp).
+// a closed surface (.off, .stl, .ply, .mesh, .msh), converted by surface_to_plc
+// (surface.hpp).
 Plc read_domain(const std::string& path);
 
 enum class MeshFormat { TetGen, Vtu, Msh, Medit };

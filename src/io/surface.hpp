@@ -80,5 +80,12 @@ Plc surface_to_plc(const Surface& surface);
 Surface read_off(const std::string& path);  // off_read.cpp
 Surface read_stl(const std::string& path);  // stl_read.cpp
 Surface read_ply(const std::string& path);  // ply_read.cpp
+// Gmsh .msh 2.2/4.1, ASCII or binary (gmsh.hpp): the triangles (types 2, 9, 20-25) and
+// quadrilaterals (3, 10, 16) by their corners, in $Elements order, with their physical tags
+// as markers; node tags number the vertices in messages. Other elements are ignored.
+Surface read_gmsh_surface(const std::string& path);  // gmsh_read.cpp
+// medit .mesh (medit.hpp): the Triangles, then the Quadrilaterals, with their refs as
+// markers; vertices numbered from 1 in messages.
+Surface read_medit_surface(const std::string& path);  // medit_read.cpp
 
 }  // namespace pdr::io

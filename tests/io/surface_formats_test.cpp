@@ -1,4 +1,4 @@
-// The surface readers one format at a time (OFF, STL, PLY): hand-written files of each variant
+// The surface readers one format at a time (OFF, STL, PLY, medit, Gmsh): hand-written files of each variant
 // the format headers list, read as the box of surface_shapes.hpp, and malformed files
 // rejected with file:line (text) or the face's number (binary).
 #include <gtest/gtest.h>
@@ -216,6 +216,85 @@ TEST(SurfaceFormats, Ply) {
       << m;
   m = error_of("x.ply", "PLY\n");
   EXPECT_NE(m.find("x.ply:1: a PLY file starts with the line 'ply'"), std::string::npos) << m;
+}
+
+// The box's bottom and top as squares, the four sides as triangles (refs: 1 for squares,
+// 2 for triangles), in medit's layout: Vertices on lines 5-12, Triangles from line 15,
+// Quadrilaterals from line 25.
+// `drop_last` leaves the last triangle out (the surface is then open).
+std::string medit_box(bool drop_last = false) {
+  const Shape q = box_squares();
+  std::ostringstream o;
+  o << "MeshVersionFormatted 2\nDimension 3\nVertices\n8\n";
+  for (const Point& p : q.points) o << p[0] << ' ' << p[1] << ' ' << p[2] << " 0\n";
+  o << "Triangles\n" << (drop_last ? 7 : 8) << '\n';
+  for (std::size_t f = 2; f < 6; ++f) {
+    const auto& c = q.faces[f];
+    o << c[0] + 1 << ' ' << c[1] + 1 << ' ' << c[2] + 1 << " 2\n";
+    if (f < 5 || !drop_last) o << c[0] + 1 << ' ' << c[2] + 1 << ' ' << c[3] + 1 << " 2\n";
+  }
+  o << "Quadrilaterals\n2\n";
+  for (std::size_t f = 0; f < 2; ++f) {
+    const auto& c = q.faces[f];
+    o << c[0] + 1 << ' ' << c[1] + 1 << ' ' << c[2] + 1 << ' ' << c[3] + 1 << " 1\n";
+  }
+  o << "Edges\n1\n1 2 0\nEnd\n";
+  return o.str();
+}
+
+TEST(SurfaceFormats, Medit) {
+  ScratchDir dir;
+  const Plc plc = read_as(dir, "b.mesh", medit_box());
+  expect_box(plc);
+  EXPECT_EQ(plc.facets[0].marker, 2);          // the first triangle's side
+  EXPECT_EQ(plc.facets[0].line, 15u);
+  EXPECT_EQ(plc.facets[4].marker, 1);          // the squares come after the triangles
+  EXPECT_EQ(plc.facets[4].line, 25u);
+  // A side with the wrong ref is a facet of its own beside its other half.
+  std::string refs = medit_box();
+  refs.replace(refs.find(" 2\n", refs.find("Triangles")), 3, " 3\n");
+  EXPECT_EQ(read_as(dir, "r.mesh", refs).facets.size(), 7u);
+  // The last triangle dropped: the first face at an open edge is named, with medit's
+  // 1-based vertex numbers (face 1, the y = 0 side's first triangle, ends at x = 1).
+  const std::string m = error_of("x.mesh", medit_box(true));
+  EXPECT_NE(m.find("x.mesh:15: face 1: closed surface: the edge from vertex 2 (1, 0, 0) to "
+                   "vertex 6 (1, 0, 1) belongs to no other face"),
+            std::string::npos) << m;
+}
+
+TEST(SurfaceFormats, GmshQuadsTrianglesAndLines) {
+  ScratchDir dir;
+  // MSH 2.2: nodes tagged 11..18, a line element (skipped), the bottom and top as quads
+  // (type 3) with physical tag 5, the sides as triangles (type 2) with physical tag 6.
+  const Shape q = box_squares();
+  std::ostringstream o;
+  o << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n";
+  for (std::size_t i = 0; i < 8; ++i)
+    o << 11 + i << ' ' << q.points[i][0] << ' ' << q.points[i][1] << ' ' << q.points[i][2] << '\n';
+  o << "$EndNodes\n$Elements\n11\n1 1 2 0 1 11 12\n";
+  int id = 2;
+  for (std::size_t f = 0; f < 6; ++f) {
+    const auto& c = q.faces[f];
+    if (f < 2) {
+      o << id++ << " 3 2 5 1";
+      for (std::uint32_t v : c) o << ' ' << 11 + v;
+      o << '\n';
+    } else {
+      o << id++ << " 2 2 6 2 " << 11 + c[0] << ' ' << 11 + c[1] << ' ' << 11 + c[2] << '\n';
+      o << id++ << " 2 2 6 2 " << 11 + c[0] << ' ' << 11 + c[2] << ' ' << 11 + c[3] << '\n';
+    }
+  }
+  o << "$EndElements\n";
+  const Plc plc = read_as(dir, "b.msh", o.str());
+  expect_box(plc);
+  EXPECT_EQ(plc.facets[0].marker, 5);
+  EXPECT_EQ(plc.facets[0].line, 18u);
+  EXPECT_EQ(plc.facets[2].marker, 6);
+  // A face through an undefined node.
+  std::string bad = o.str();
+  bad.replace(bad.find("2 3 2 5 1 11"), 12, "2 3 2 5 1 99");
+  const std::string m = error_of("x.msh", bad);
+  EXPECT_NE(m.find("x.msh:18: element 2 uses node 99"), std::string::npos) << m;
 }
 
 }  // namespace

@@ -47,7 +47,10 @@ TEST(SurfaceTools, GmshSurfacesReadAsTheSolidsSides) {
     ScratchDir dir;
     write_text(dir / "s.geo", std::string("SetFactory(\"OpenCASCADE\");\n") + solid.geo +
                                   "\nMesh.MeshSizeMin = 0.5;\nMesh.MeshSizeMax = 0.5;\n");
-    const std::string flags[][2] = {{"stl", "a.stl"}, {"stl -bin", "b.stl"}};
+    const std::string flags[][2] = {{"stl", "a.stl"},       {"stl -bin", "b.stl"},
+                                    {"mesh", "a.mesh"},     {"msh22", "a22.msh"},
+                                    {"msh22 -bin", "b22.msh"}, {"msh41", "a41.msh"},
+                                    {"msh41 -bin", "b41.msh"}};
     std::vector<Plc> plcs;
     for (const auto& [format, file] : flags) {
       ASSERT_EQ(run_in(dir.str(), "gmsh -2 s.geo -format " + format + " -o " + file), 0)
@@ -58,12 +61,13 @@ TEST(SurfaceTools, GmshSurfacesReadAsTheSolidsSides) {
       EXPECT_EQ(holes(plc), solid.holes) << file;
     }
     // Binary STL holds float32: on these axis-aligned solids the plane coordinates stay
-    // exact and the boundary vertices are the same as in ASCII up to float rounding.
-    EXPECT_EQ(plcs[0].points.size(), plcs[1].points.size());
+    // exact and the boundary vertices are the same in every format up to rounding.
+    for (const Plc& plc : plcs) EXPECT_EQ(plc.points.size(), plcs[0].points.size());
   }
 }
 
-// meshio writes the box of 12 triangles in each format; each reads as 6 squares.
+// meshio writes the box of 12 triangles in each format and variant, and of 6 squares in
+// those that hold squares; each reads as 6 squares.
 TEST(SurfaceTools, MeshioBoxInEveryFormat) {
   if (!have_meshio()) GTEST_SKIP() << "/usr/bin/python3 has no meshio";
   ScratchDir dir;
@@ -77,9 +81,22 @@ m.write("a.stl", binary=False)
 m.write("b.stl", binary=True)
 m.write("a.ply", binary=False)
 m.write("b.ply", binary=True)
+m.write("a.mesh")
+m.write("a22.msh", file_format="gmsh22", binary=False)
+m.write("b22.msh", file_format="gmsh22", binary=True)
+m.write("a41.msh", file_format="gmsh", binary=False)
+m.write("b41.msh", file_format="gmsh", binary=True)
+q = np.array([[0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7]])
+m = meshio.Mesh(p, [("quad", q)])
+m.write("q.ply", binary=True)
+m.write("q.mesh")
+m.write("q22.msh", file_format="gmsh22", binary=False)
+m.write("q41.msh", file_format="gmsh", binary=True)
 )");
   ASSERT_EQ(run_in(dir.str(), "/usr/bin/python3 w.py"), 0) << read_text(dir / "log.txt");
-  for (const char* file : {"a.off", "a.stl", "b.stl", "a.ply", "b.ply"}) {
+  for (const char* file : {"a.off", "a.stl", "b.stl", "a.ply", "b.ply", "a.mesh", "a22.msh",
+                           "b22.msh", "a41.msh", "b41.msh", "q.ply", "q.mesh", "q22.msh",
+                           "q41.msh"}) {
     SCOPED_TRACE(file);
     const Plc plc = read_domain(dir / file);
     EXPECT_EQ(plc.facets.size(), 6u);
