@@ -13,7 +13,7 @@
 // Binary files must be in the host's byte order (the file's int 1 marker is checked).
 // As a surface domain (read_gmsh_surface, surface.hpp) the same sections give the
 // triangles and quadrilaterals (types 3, 10, 16) instead, and tetrahedra are ignored.
-// Other sections ($PhysicalNames, $NodeData, $Periodic, ...) are skipped.
+// Other sections ($NodeData, $Periodic, ...) are skipped.
 //
 // Orientation, found by experiment with Gmsh 4.8.4 (`gmsh -3` on an OpenCASCADE box and on
 // a built-in-kernel box with second-order elements, in msh22, msh41, mesh and vtk formats,
@@ -23,11 +23,20 @@
 // box, surface 1 defined with a +z normal at z=0 gave 42/42 inward triangles while the other
 // five surfaces were outward): MSH has no face convention, so faces are read as they are.
 //
-// Writing (4.1 ASCII, "4.1 0 8"): one volume entity per distinct tet region and one surface
-// entity per distinct face marker, each with that value as its physical tag (none for 0);
-// every node on volume entity 1; elements in MeshData order, one block per run of equal
-// markers (Gmsh merges blocks of one entity). Gmsh itself reads the absolute value of a
-// negative physical tag; pdr reads it back as written. Point markers are not written.
+// Tets and triangles are returned each in the order of their element tags (the file order
+// when, as Gmsh and pdr write them, the tags increase through the file). A physical group
+// named "pdr marker <m>" in $PhysicalNames (placed before $Elements, as Gmsh writes it)
+// stands for marker m instead of its tag.
+//
+// Writing (4.1 ASCII, "4.1 0 8"), in the form meshio and Gmsh both read: one surface
+// entity per distinct face marker and one volume entity per distinct tet region (at least
+// one), each in a physical group of its own named "pdr marker <value>" in $PhysicalNames,
+// whose tag is the value when positive and otherwise the smallest positive tag that no
+// other group of that dimension has (Gmsh wants positive tags; the name brings the value
+// back); every node on volume entity 1; one element block per entity and element type,
+// holding that entity's elements in MeshData order; element tags 1.. over the faces, then
+// the tets, in MeshData order, so the reader restores MeshData's order. Point markers are
+// not written.
 #pragma once
 
 #include <string>

@@ -67,16 +67,44 @@ std::uint32_t GmshNodes::find(std::uint64_t tag) const {
   return (it != sparse_.end() && it->first == tag) ? it->second : kMissing;
 }
 
+namespace {
+
+// Puts elements and their markers in the order of their tags (stable for equal tags).
+template <class Elem>
+void sort_by_tag(std::vector<Elem>& elems, std::vector<int>& markers,
+                 const std::vector<std::int64_t>& tags) {
+  if (std::is_sorted(tags.begin(), tags.end())) return;
+  std::vector<std::uint32_t> order(tags.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return tags[a] < tags[b]; });
+  std::vector<Elem> e(elems.size());
+  std::vector<int> m(markers.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    e[i] = elems[order[i]];
+    m[i] = markers[order[i]];
+  }
+  elems = std::move(e);
+  markers = std::move(m);
+}
+
+}  // namespace
+
 GmshSink::GmshSink(std::vector<Point>&& points, bool surface)
     : roles_(points.size()), surface_mode_(surface) {
   mesh_.points = std::move(points);
 }
 
-void GmshSink::add(const GmshType& type, const std::uint32_t* idx, int marker,
-                   std::size_t line) {
+void GmshSink::add(const GmshType& type, const std::uint32_t* idx, int physical,
+                   std::size_t line, std::int64_t tag) {
   if (!wants(type.kind)) {
     ++skipped_;
     return;
+  }
+  int marker = physical;
+  if (!names_.empty()) {
+    const auto it = names_.find({type.kind == GmshKind::Tet ? 3 : 2, physical});
+    if (it != names_.end()) marker = it->second;
   }
   if (surface_mode_) {
     const std::size_t corners = type.kind == GmshKind::Tri ? 3 : 4;
@@ -84,11 +112,13 @@ void GmshSink::add(const GmshType& type, const std::uint32_t* idx, int marker,
   } else if (type.kind == GmshKind::Tet) {
     mesh_.tets.push_back({idx[0], idx[1], idx[2], idx[3]});
     mesh_.tet_regions.push_back(marker);
+    tet_tags_.push_back(tag);
     for (int k = 0; k < 4; ++k) roles_.corner(idx[k]);
     for (int k = 4; k < type.nodes; ++k) roles_.high_order(idx[k]);
   } else {
     mesh_.faces.push_back({idx[0], idx[1], idx[2]});
     mesh_.face_markers.push_back(marker);
+    face_tags_.push_back(tag);
     for (int k = 0; k < 3; ++k) roles_.corner(idx[k]);
     for (int k = 3; k < type.nodes; ++k) roles_.high_order(idx[k]);
   }
@@ -110,6 +140,8 @@ MeshData GmshSink::finish(ReadInfo* info, std::string& problem) {
               "volume meshes: mesh the volume (gmsh -3) and export again";
     return {};
   }
+  sort_by_tag(mesh_.tets, mesh_.tet_regions, tet_tags_);
+  sort_by_tag(mesh_.faces, mesh_.face_markers, face_tags_);
   drop_if_all_zero(mesh_.tet_regions);
   drop_if_all_zero(mesh_.face_markers);
   const std::size_t dropped = roles_.drop_high_order_only(mesh_);

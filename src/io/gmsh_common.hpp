@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,9 @@ class GmshNodes {
   bool use_dense_ = true;
 };
 
+// (dimension, physical tag) -> the marker a group named "pdr marker <marker>" stands for.
+using GmshMarkerNames = std::map<std::pair<int, int>, int>;
+
 // Collects elements into a MeshData (tets and triangles), or with `surface` into a Surface
 // (triangles and quadrilaterals, in file order). Node indices must already be mapped.
 class GmshSink {
@@ -62,17 +66,24 @@ class GmshSink {
     return surface_mode_ ? kind == GmshKind::Tri || kind == GmshKind::Quad
                          : kind == GmshKind::Tet || kind == GmshKind::Tri;
   }
-  // Adds an element of `type` with mapped nodes `idx[0..n)`, marker (physical tag) and
-  // source line (0 in binary files).
-  void add(const GmshType& type, const std::uint32_t* idx, int marker, std::size_t line);
+  // Physical tags that stand for other markers, from $PhysicalNames.
+  void set_marker_names(GmshMarkerNames names) { names_ = std::move(names); }
+  // Adds an element of `type` with mapped nodes `idx[0..n)`, physical tag, source line (0
+  // in binary files) and element tag.
+  void add(const GmshType& type, const std::uint32_t* idx, int physical, std::size_t line,
+           std::int64_t tag);
   void skip() { ++skipped_; }
-  // Finishes the mesh; `problem` is set when the file has no tets but other elements.
+  // Finishes the mesh, tets and faces each in the order of their element tags (the file's
+  // order when it lists them by tag); `problem` is set when the file has no tets but other
+  // elements.
   MeshData finish(ReadInfo* info, std::string& problem);
   // Finishes the surface: points with the nodes' tags and (ASCII) lines.
   Surface finish_surface(const std::string& path, const GmshNodes& nodes, bool binary);
 
  private:
   MeshData mesh_;
+  std::vector<std::int64_t> tet_tags_, face_tags_;
+  GmshMarkerNames names_;
   Surface surface_;
   PointRoles roles_;
   std::size_t skipped_ = 0;

@@ -94,7 +94,7 @@ void read_elements_v2(TextScanner& s, const GmshFormat& f, const GmshNodes& node
           const auto tag = b.get<std::int32_t>("an element node");
           idx[k] = map_node(nodes, static_cast<std::uint64_t>(tag < 0 ? 0 : tag), id, fail);
         }
-        sink.add(type, idx, physical, 0);
+        sink.add(type, idx, physical, 0, id);
       }
       done += static_cast<std::size_t>(count);
     }
@@ -119,7 +119,7 @@ void read_elements_v2(TextScanner& s, const GmshFormat& f, const GmshNodes& node
       for (int k = 0; k < type.nodes; ++k)
         idx[k] = map_node(nodes, s.number<std::uint64_t>("an element node"), id, fail);
       s.end_line("the element's nodes");
-      sink.add(type, idx, physical, s.line());
+      sink.add(type, idx, physical, s.line(), id);
     }
   }
   expect_section_end(s, "$Elements");
@@ -170,6 +170,27 @@ void skip_section(TextScanner& s, std::string_view name) {
 
 }  // namespace
 
+GmshMarkerNames read_physical_names(TextScanner& s) {
+  s.require_line("the number of physical names");
+  const std::size_t n = s.count("the number of physical names", 6);
+  s.end_line("the number of physical names");
+  GmshMarkerNames out;
+  constexpr std::string_view kPrefix = "\"pdr marker ";
+  for (std::size_t i = 0; i < n; ++i) {
+    s.require_line("a physical name '<dim> <tag> \"<name>\"'");
+    const int dim = s.number<int>("the physical group's dimension");
+    const int tag = s.number<int>("the physical tag");
+    const std::string_view name = s.rest_of_line();
+    int marker = 0;
+    if (name.size() > kPrefix.size() + 1 && name.substr(0, kPrefix.size()) == kPrefix &&
+        name.back() == '"' &&
+        parse_number(name.substr(kPrefix.size(), name.size() - kPrefix.size() - 1), marker))
+      out[{dim, tag}] = marker;
+  }
+  expect_section_end(s, "$PhysicalNames");
+  return out;
+}
+
 namespace {
 
 // The sections of a whole file; `sink` holds its elements.
@@ -186,6 +207,7 @@ GmshFile read_sections(const std::string& path, const std::string& bytes, bool s
   const GmshFormat& f = file.format;
   GmshNodes& nodes = file.nodes;
   GmshPhysicals physicals;
+  GmshMarkerNames names;
   bool have_nodes = false;
   while (s.next_line()) {
     const std::string_view name = s.token("a section name");
@@ -208,8 +230,11 @@ GmshFile read_sections(const std::string& path, const std::string& bytes, bool s
       if (!have_nodes) s.fail("$Elements comes before $Nodes; Gmsh writes $Nodes first");
       if (file.sink) s.fail("a second $Elements section is not supported");
       file.sink.emplace(std::move(nodes.points()), surface);
+      file.sink->set_marker_names(names);
       if (f.major == 2) read_elements_v2(s, f, nodes, *file.sink);
       else read_elements_v4(s, f, nodes, physicals, *file.sink);
+    } else if (name == "$PhysicalNames") {
+      names = read_physical_names(s);
     } else if (name == "$Entities" && f.major == 4) {
       read_entities_v4(s, f, physicals);
     } else {

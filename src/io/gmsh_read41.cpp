@@ -201,7 +201,7 @@ void read_elements_v4(TextScanner& s, const GmshFormat& f, const GmshNodes& node
         }
         for (int k = 0; k < type.nodes; ++k)
           idx[k] = map_node(nodes, b.get_uint(f.data_size, "an element node"), id, fail);
-        sink.add(type, idx, marker, 0);
+        sink.add(type, idx, marker, 0, id);
       }
       total += n;
     }
@@ -237,7 +237,7 @@ void read_elements_v4(TextScanner& s, const GmshFormat& f, const GmshNodes& node
         for (int k = 0; k < type.nodes; ++k)
           idx[k] = map_node(nodes, s.number<std::uint64_t>("an element node"), id, fail);
         s.end_line("the element's nodes");
-        sink.add(type, idx, marker, s.line());
+        sink.add(type, idx, marker, s.line(), id);
       }
       total += n;
     }

@@ -24,6 +24,10 @@ struct GmshFormat {
 // (entity dimension, entity tag) -> first physical tag (only entities that have one).
 using GmshPhysicals = std::map<std::pair<int, int>, int>;
 
+// $PhysicalNames (both versions): "<n>" then n lines "<dim> <tag> \"<name>\"". Returns
+// (dim, physical tag) -> marker for the groups named "pdr marker <marker>" (gmsh.hpp).
+GmshMarkerNames read_physical_names(TextScanner& s);
+
 // Moves to the next line and checks that it is "$End<name>".
 void expect_section_end(TextScanner& s, std::string_view name);
 
