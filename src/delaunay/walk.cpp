@@ -38,6 +38,12 @@ Location locate(const TetStore& s, std::span<const Point> pts, const Point& p, T
     const HalfFace h = s.opposite(t, 3);
     t = tet_of(h);
     entered = face_of(h);
+    if (s.is_proxy(t)) {  // the tet behind the hull face lives in another submesh
+      out.kind = Location::Kind::Remote;
+      out.tet = t;
+      out.steps = 1;
+      return out;
+    }
   }
   std::uint32_t steps = 1;
   for (;;) {

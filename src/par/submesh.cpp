@@ -215,13 +215,29 @@ std::vector<TetId> Submesh::give(const Migration& m) {
   return ids;
 }
 
+VertexId Submesh::insert(const Cavity& c, std::uint8_t inside) {
+  const VertexId v = local_vertex(fresh_gid(), &c.point);
+  for (const TetId t : c.conflict) {
+    tet_at_.erase(tet_gid_[t]);
+    moved_[tet_gid_[t]] = Claim{kDeleted, ~std::uint32_t{0}};
+  }
+  committer_.commit(store_, c, v, points_.size());
+  for (const TetId t : committer_.created()) record_tet(t, fresh_gid(), 0, inside);
+  return v;
+}
+
 bool Submesh::relink(Relink& r) {
   if (tet_at_.count(r.about) != 0) {
-    // A proxy on that face, unless the moved tet is here too (then the face is inside).
-    if (const auto it = proxy_at_.find(r.face); it != proxy_at_.end()) claim(it->second, r.claim);
+    // A proxy on that face, unless the moved tet is here too (then the face is inside),
+    // and only one that still names the moved tet: after a commit, a new tet may have
+    // the same face.
+    if (const auto it = proxy_at_.find(r.face);
+        it != proxy_at_.end() && side_.at(it->second).tet == r.tet)
+      claim(it->second, r.claim);
     return true;
   }
   if (const auto next = moved(r.about, r.about_epoch)) {
+    if (next->holder == kDeleted) return true;  // moot: the face is gone with the tet
     r.recipient = next->holder;
     r.about_epoch = next->epoch;
     return false;

@@ -39,6 +39,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "delaunay/cavity.hpp"
+#include "delaunay/insert.hpp"
 #include "geom/point.hpp"
 #include "mesh/tet_store.hpp"
 #include "par/partition.hpp"
@@ -50,6 +52,7 @@ using ActorId = std::uint32_t;                  // a submesh
 inline constexpr Gid kGhostGid = ~Gid{0};       // the ghost vertex, in every submesh
 inline constexpr Gid kNoGid = ~Gid{0} - 1;
 inline constexpr ActorId kSameMigration = 0xFFFFFFFFu;  // Side::claim.holder: internal
+inline constexpr ActorId kDeleted = 0xFFFFFFFEu;  // moved(): the tet was deleted here
 
 // A face by the global ids of its vertices, sorted (orientation is not part of the key).
 struct FaceKey {
@@ -136,6 +139,15 @@ class Submesh {
   // Adds a migration's tets (m.to == id()); returns their local ids, in m.tets's order.
   std::vector<TetId> give(const Migration& m);
 
+  // Bowyer-Watson at this submesh: commits cavity c, built on this store as it is now and
+  // complete (conflict tets and ring all real tets here: par/cavity_search.hpp), with
+  // c.point as a new vertex. The vertex and the new tets get fresh global ids (this
+  // submesh's id and a serial); the new tets get `inside`. The deleted tets are recorded
+  // (moved() says kDeleted), so a late request or notice about one is answered. Returns
+  // the new vertex; `created()` lists the new tets.
+  VertexId insert(const Cavity& c, std::uint8_t inside);
+  std::span<const TetId> created() const { return committer_.created(); }
+
   // Applies a relink notice addressed here; false when it must go on to the submesh this
   // one sent r.about to: then r.recipient and r.about_epoch name that hand-over.
   bool relink(Relink& r);
@@ -155,7 +167,11 @@ class Submesh {
   void claim(TetId proxy, const Claim& c);  // keeps the newer claim
   void record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside);
 
+  Gid fresh_gid() { return (Gid{id_} + 1) << 40 | serial_++; }
+
   ActorId id_;
+  Gid serial_ = 0;  // fresh global ids: (id + 1) * 2^40 + serial; M_o's are below 2^40
+  CavityCommitter committer_;
   TetStore store_;
   std::vector<Point> points_;
   std::vector<Gid> gids_;

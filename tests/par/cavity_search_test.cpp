@@ -7,9 +7,12 @@
 // every submesh stays valid and together they still hold the mesh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <set>
 
 #include "delaunay/cavity.hpp"
+#include "delaunay/delaunay.hpp"
 #include "delaunay/walk.hpp"
 #include "geom/construct.hpp"
 #include "par/cavity_search.hpp"
@@ -70,6 +73,10 @@ Cavity search(World& w, ActorId root, const Point& p, TetId hint, SearchStats& s
       for (const Side& x : sides) {
         if (w.subs[at].find_tet(x.tet) != kNoTet) continue;
         if (const auto next = w.subs[at].moved(x.tet, x.claim.epoch)) {
+          if (next->holder == kDeleted) {
+            ADD_FAILURE() << "a proxy of the root names tet " << x.tet << ", deleted at " << at;
+            return {};
+          }
           ++st.redirects;  // it moved on: follow the record of where it went
           todo[next->holder].push_back({x.tet, *next});
         } else {
@@ -149,6 +156,81 @@ TEST(CavitySearch, FindsTheSequentialCavityAcrossSubmeshes) {
   EXPECT_GT(st.waits, 0u);       // some waited for one on its way
   std::printf("%zu distributed searches, %zu rounds, %zu tets fetched, %zu redirects, %zu waits\n",
               distributed, st.rounds, st.fetched, st.redirects, st.waits);
+}
+
+// A finite tet as its four points, sorted: the same key in any mesh of the same points.
+using PointTet = std::array<Point, 4>;
+PointTet point_tet(std::array<Point, 4> p) {
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
+// Distributed Bowyer-Watson: random points inserted at random submeshes, each through a
+// distributed search and a local commit (Submesh::insert), with migrations and messages
+// in flight between them. The symbolic perturbation makes the Delaunay tetrahedralization
+// of a point set unique, so the submeshes together must hold exactly the tets the
+// sequential kernel makes from the same points.
+TEST(CavitySearch, DistributedInsertionGivesTheSequentialDelaunayMesh) {
+  const refine::VolumeMesh& vm = test::cube_in_cube();
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    World w = test::cut(2 + static_cast<std::uint32_t>(seed % 4) * 2, seed);
+    Delaunay reference = vm.dt;
+    SearchStats st;
+    for (int k = 0; k < 400; ++k) {
+      for (int m = 0; m < 2; ++m) w.migrate_some();
+      const std::size_t keep = w.rng() % 32;
+      while (in_flight(w) > keep) w.deliver_one();
+      Point p;
+      for (int i = 0; i < 3; ++i) p[i] = 10.0 * static_cast<double>(w.rng() % 1000003) / 1000003.0;
+      ActorId root = static_cast<ActorId>(w.rng() % w.subs.size());
+      while (w.subs[root].real_tets() == 0) root = (root + 1) % static_cast<ActorId>(w.subs.size());
+      const TetStore& rs = w.subs[root].store();
+      TetId hint = 0;
+      while (!rs.is_alive(hint) || rs.is_proxy(hint)) ++hint;
+      const Cavity c = search(w, root, p, hint, st);
+      ASSERT_FALSE(c.conflict.empty()) << "seed " << seed << " point " << k;
+      w.subs[root].insert(c, 0);
+      ASSERT_EQ(reference.insert(p).outcome, Outcome::Inserted);
+      if (k % 50 == 0) {
+        const auto problems = w.subs[root].check();
+        ASSERT_TRUE(problems.empty()) << problems.front();
+      }
+    }
+    drain(w);
+    std::multiset<PointTet> got, want;
+    std::size_t ghosts_got = 0, ghosts_want = 0;
+    for (const Submesh& s : w.subs) {
+      ASSERT_TRUE(s.check().empty()) << s.check().front();
+      EXPECT_EQ(s.waiting_relinks(), 0u);
+      const TetStore& ts = s.store();
+      for (TetId t = 0; t < ts.slots(); ++t) {
+        if (!ts.is_alive(t) || ts.is_proxy(t)) continue;
+        if (ts.is_ghost(t)) {
+          ++ghosts_got;
+          continue;
+        }
+        const VertexId* v = ts.vertices(t);
+        got.insert(point_tet({s.points()[v[0]], s.points()[v[1]], s.points()[v[2]], s.points()[v[3]]}));
+      }
+    }
+    const TetStore& rs = reference.store();
+    for (TetId t = 0; t < rs.slots(); ++t) {
+      if (!rs.is_alive(t)) continue;
+      if (rs.is_ghost(t)) {
+        ++ghosts_want;
+        continue;
+      }
+      const VertexId* v = rs.vertices(t);
+      want.insert(point_tet({reference.point(v[0]), reference.point(v[1]), reference.point(v[2]),
+                             reference.point(v[3])}));
+    }
+    EXPECT_EQ(ghosts_got, ghosts_want) << "seed " << seed;
+    EXPECT_EQ(got.size(), want.size()) << "seed " << seed;
+    EXPECT_TRUE(got == want) << "seed " << seed << ": the distributed mesh is not the Delaunay mesh";
+    std::printf("seed %llu: %zu tets, %zu search rounds, %zu tets fetched, %zu redirects, %zu waits\n",
+                static_cast<unsigned long long>(seed), got.size(), st.rounds, st.fetched,
+                st.redirects, st.waits);
+  }
 }
 
 }  // namespace
