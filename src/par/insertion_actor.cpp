@@ -1,0 +1,211 @@
+// InsertionActor: the event loop and the protocol's handlers (par/insertion_actor.hpp).
+#include "par/insertion_actor.hpp"
+
+#include <algorithm>
+
+namespace pdr::par {
+namespace {
+
+enum class Type : std::uint8_t { Fetch = 1, Tets = 2, Refuse = 3, Relink = 4, Point = 5 };
+
+Bytes migration_message(std::uint64_t search, bool walk, const Migration& m) {
+  WireWriter w;
+  w.put(Type::Tets).put(search).put<std::uint8_t>(walk).put(m.from).put(m.to);
+  w.put_vector(m.tets).put_vector(m.vertices);
+  return w.take();
+}
+
+}  // namespace
+
+InsertionActor::InsertionActor(Transport& t, Submesh sub, std::uint64_t seed)
+    : t_(t), sub_(std::move(sub)), td_(t), rng_(seed ^ (0x9E3779B97F4A7C15ull * (sub_.id() + 1))) {}
+
+void InsertionActor::send(int to, Bytes b) { t_.send(to, std::move(b)); }
+
+bool InsertionActor::step() {
+  ++tick_;
+  worked_ = t_.poll([&](int from, std::span<const std::byte> m) { receive(from, m); }, 16) > 0;
+  for (std::size_t i = 0; i < delayed_.size();)
+    if (delayed_[i].wake <= tick_) {
+      ready_.push_back(delayed_[i]);
+      delayed_[i] = delayed_.back();
+      delayed_.pop_back();
+    } else {
+      ++i;
+    }
+  if (active_ && again_) {
+    again_ = false;
+    round();
+    worked_ = true;
+  } else if (!active_ && !ready_.empty()) {
+    const Waiting w = ready_.front();
+    ready_.pop_front();
+    worked_ = true;
+    const TetId start = any_real_tet();
+    if (start == kNoTet) {  // nothing here to start from: the next rank takes the point
+      WireWriter m;
+      m.put(Type::Point).put(w.p).put(w.setbacks);
+      send((sub_.id() + 1) % static_cast<ActorId>(t_.size()), m.take());
+      ++stats_.points_passed;
+    } else {
+      active_ = true;
+      s_ = Search{next_search_++, w, sub_.tet_gid(start), 0, false, false};
+      round();
+    }
+  }
+  if (worked_) td_.activity();
+  return td_.step(idle());
+}
+
+TetId InsertionActor::any_real_tet() {
+  const TetStore& st = sub_.store();
+  if (sub_.real_tets() == 0) return kNoTet;
+  for (std::size_t n = 0; n <= st.slots(); ++n) {
+    if (cursor_ >= st.slots()) cursor_ = 0;
+    const TetId t = cursor_++;
+    if (st.is_alive(t) && !st.is_proxy(t)) return t;
+  }
+  return kNoTet;
+}
+
+void InsertionActor::round() {
+  ++stats_.rounds;
+  TetId hint = sub_.find_tet(s_.hint);
+  if (hint == kNoTet) hint = any_real_tet();  // the hint was taken: start anywhere here
+  if (hint == kNoTet) {                       // everything here was taken: start over
+    setback();
+    return;
+  }
+  RootCavity rc = search_.root_cavity(sub_, s_.w.p, hint);
+  if (rc.kind == RootCavity::Kind::OnVertex) {
+    ++stats_.duplicates;
+    finish();
+    return;
+  }
+  if (rc.kind == RootCavity::Kind::Complete) {
+    sub_.insert(rc.cavity, 0);
+    ++stats_.commits;
+    finish();
+    return;
+  }
+  if (rc.fetch.count(sub_.id()) != 0) {  // tets on their way here: look again later
+    again_ = true;
+    return;
+  }
+  locked_.clear();
+  if (rc.walk) {
+    locked_.insert(hint);
+  } else {
+    locked_.insert(rc.cavity.conflict.begin(), rc.cavity.conflict.end());
+    for (const TetId t : rc.cavity.ring)
+      if (!sub_.store().is_proxy(t)) locked_.insert(t);
+  }
+  s_.walk = rc.walk;
+  s_.refused = false;
+  s_.outstanding = static_cast<int>(rc.fetch.size());
+  for (const auto& [owner, sides] : rc.fetch) {
+    WireWriter m;
+    m.put(Type::Fetch).put(sub_.id()).put(s_.id).put(s_.w.p).put<std::uint8_t>(rc.walk);
+    m.put_vector(sides);
+    send(static_cast<int>(owner), m.take());
+  }
+}
+
+void InsertionActor::finish() {
+  active_ = false;
+  again_ = false;
+  locked_.clear();
+}
+
+void InsertionActor::setback() {
+  ++stats_.setbacks;
+  Waiting w = s_.w;
+  ++w.setbacks;
+  const std::uint64_t span = std::uint64_t{8} << std::min<std::uint32_t>(w.setbacks, 6);
+  w.wake = tick_ + 1 + rng_() % span;
+  delayed_.push_back(w);
+  finish();
+}
+
+void InsertionActor::reply_in(bool refused) {
+  s_.refused = s_.refused || refused;
+  if (--s_.outstanding > 0) return;
+  if (s_.refused)
+    setback();
+  else
+    round();
+}
+
+void InsertionActor::receive(int, std::span<const std::byte> bytes) {
+  WireReader r(bytes);
+  switch (r.get<Type>()) {
+    case Type::Fetch: serve_fetch(r); break;
+    case Type::Tets: take_tets(r); break;
+    case Type::Refuse: reply_in(true); break;
+    case Type::Relink: {
+      Relink n = r.get<Relink>();
+      if (!sub_.relink(n)) {
+        WireWriter m;
+        m.put(Type::Relink).put(n);
+        send(static_cast<int>(n.recipient), m.take());
+      }
+      break;
+    }
+    case Type::Point: {
+      const Point p = r.get<Point>();
+      ready_.push_back({p, r.get<std::uint32_t>(), 0});
+      break;
+    }
+  }
+}
+
+void InsertionActor::serve_fetch(WireReader& r) {
+  const auto root = r.get<ActorId>();
+  const auto search = r.get<std::uint64_t>();
+  const auto p = r.get<Point>();
+  const bool walk = r.get<std::uint8_t>() != 0;
+  const std::vector<Side> sides = r.get_vector<Side>();
+  ++stats_.fetches_served;
+  std::vector<Gid> wanted;
+  bool refuse = false;
+  for (const Side& x : sides) {
+    refuse = refuse || sub_.find_tet(x.tet) == kNoTet;  // a stale claim
+    wanted.push_back(x.tet);
+  }
+  std::vector<TetId> tets;
+  if (!refuse) {
+    tets = search_.fetch_set(sub_, p, wanted, walk);
+    refuse = std::any_of(tets.begin(), tets.end(), [&](TetId t) { return locked_.count(t) != 0; });
+  }
+  if (refuse) {
+    ++stats_.refused;
+    WireWriter m;
+    m.put(Type::Refuse).put(search);
+    send(static_cast<int>(root), m.take());
+    return;
+  }
+  std::vector<Relink> notes;
+  const Migration mig = sub_.take(tets, root, notes);
+  stats_.tets_sent += tets.size();
+  send(static_cast<int>(root), migration_message(search, walk, mig));
+  for (const Relink& n : notes) {
+    WireWriter m;
+    m.put(Type::Relink).put(n);
+    send(static_cast<int>(n.recipient), m.take());
+  }
+}
+
+void InsertionActor::take_tets(WireReader& r) {
+  r.get<std::uint64_t>();  // the search: always the active one (one search at a time)
+  const bool walk = r.get<std::uint8_t>() != 0;
+  Migration m;
+  m.from = r.get<ActorId>();
+  m.to = r.get<ActorId>();
+  m.tets = r.get_vector<TetRecord>();
+  m.vertices = r.get_vector<VertexRecord>();
+  const std::vector<TetId> ids = sub_.give(m);
+  if (walk && !ids.empty()) s_.hint = sub_.tet_gid(ids.front());
+  reply_in(false);
+}
+
+}  // namespace pdr::par

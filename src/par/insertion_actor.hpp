@@ -1,0 +1,103 @@
+// InsertionActor: one rank's event loop for distributed Delaunay insertion, the protocol
+// of docs/parallel.md (paper §4.2-4.4) without the refinement rules: each rank holds one
+// submesh and a queue of points; it inserts them one search at a time, while it serves
+// the other ranks' searches. ParRefinement will run the refinement step in the same loop.
+//
+// A search for point p at its root:
+//   round: root_cavity (par/cavity_search.hpp) in the root's store. Complete: commit
+//     (Submesh::insert), done. Remote: lock the tets of the root's part of the closure
+//     (for a walk, the tet it stopped at), send FETCH to each submesh a proxy names, and
+//     wait for every reply: TETS (the tets, migrated here and added at once) or REFUSE.
+//     A proxy naming this rank means tets are on their way here: the round is run again
+//     on a later step, once they have come.
+//   all replies in: if any was REFUSE, a setback: unlock, and p waits a seeded random
+//     back-off of 1..8·2^min(k,6) steps after its k-th setback (§4.3), then starts again;
+//     else the next round.
+// Serving a FETCH: every requested tet must be here (else REFUSE: the requester's claim is
+// stale, and a relink notice is on its way to it), and none of the tets fetch_set() would
+// send may be locked by this rank's own search (else REFUSE: closures of concurrent
+// searches never overlap, §4.1); then the tets migrate to the root (TETS), and the relink
+// notices go to the ranks they name (RELINK).
+// Termination (par/termination.hpp): a rank is idle when it has no search, no point
+// waiting (back-off included) and nothing unread.
+// Every commit is made on a closure that lies wholly in one rank's store, in one step of a
+// single-threaded loop, so no two commits share a closure tet: Lemma 2's condition. The
+// result is the Delaunay tetrahedralization of all points, which the symbolic
+// perturbation makes unique (tested against the sequential kernel).
+// A rank whose store has no tet left passes its points on (POINT) to the next rank.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <random>
+#include <unordered_set>
+#include <vector>
+
+#include "par/cavity_search.hpp"
+#include "par/submesh.hpp"
+#include "par/termination.hpp"
+#include "par/wire.hpp"
+#include "par/transport.hpp"
+
+namespace pdr::par {
+
+struct InsertionStats {
+  std::uint64_t commits = 0, rounds = 0, setbacks = 0, duplicates = 0;
+  std::uint64_t fetches_served = 0, refused = 0, tets_sent = 0, points_passed = 0;
+};
+
+class InsertionActor {
+ public:
+  // The rank's transport (rank r holds submesh r); `seed` seeds the back-off.
+  InsertionActor(Transport& t, Submesh sub, std::uint64_t seed);
+
+  void add_point(const Point& p) { ready_.push_back({p, 0, 0}); }
+  // One loop iteration; true once the run has terminated everywhere.
+  bool step();
+
+  const Submesh& submesh() const { return sub_; }
+  const InsertionStats& stats() const { return stats_; }
+  bool idle() const { return !active_ && ready_.empty() && delayed_.empty(); }
+
+ private:
+  struct Waiting {
+    Point p{};
+    std::uint32_t setbacks = 0;
+    std::uint64_t wake = 0;  // step at which it may start again
+  };
+  struct Search {
+    std::uint64_t id = 0;
+    Waiting w;
+    Gid hint = kNoGid;
+    int outstanding = 0;
+    bool refused = false;
+    bool walk = false;
+  };
+
+  void receive(int from, std::span<const std::byte> m);
+  void serve_fetch(WireReader& r);
+  void take_tets(WireReader& r);
+  void reply_in(bool refused);
+  void round();  // one round of the active search
+  void setback();
+  void finish();
+  TetId any_real_tet();
+  void send(int to, Bytes b);
+
+  Transport& t_;
+  Submesh sub_;
+  TerminationDetector td_;
+  CavitySearch search_;
+  std::mt19937_64 rng_;
+  std::uint64_t tick_ = 0, next_search_ = 1;
+  bool active_ = false, again_ = false;  // again_: run the round on the next step
+  bool worked_ = false;
+  Search s_;
+  std::unordered_set<TetId> locked_;
+  std::deque<Waiting> ready_;
+  std::vector<Waiting> delayed_;
+  TetId cursor_ = 0;
+  InsertionStats stats_;
+};
+
+}  // namespace pdr::par
