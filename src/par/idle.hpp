@@ -3,9 +3,11 @@
 // (mpirun --oversubscribe).
 //   - every 16th empty iteration in a row yields the core (sched_yield): an oversubscribed
 //     peer that holds the message we wait for gets to run; MPI progresses on our next poll;
-//   - after 4096 empty iterations in a row (a rank with nothing to do for a while, e.g.
-//     waiting for the last ranks to finish), it sleeps, starting at 20 µs and doubling up
-//     to 1 ms, so an idle rank costs almost no CPU; any work resets the streak.
+//   - after 4096 empty iterations in a row of a rank with nothing of its own under way
+//     (e.g. waiting for the last ranks to finish), it sleeps, starting at 20 µs and
+//     doubling up to 1 ms, so an idle rank costs almost no CPU; any work resets the
+//     streak. A rank waiting for replies to its own requests only yields: a sleep there
+//     would add to every round trip.
 // A 1 ms sleep delays a reply by at most 1 ms, against a refinement phase of seconds.
 #pragma once
 
@@ -20,8 +22,9 @@ namespace pdr::par {
 
 class IdlePolicy {
  public:
-  // Called once per loop iteration; `worked`: the iteration did something.
-  void after_iteration(bool worked) {
+  // Called once per loop iteration; `worked`: the iteration did something; `waiting`: the
+  // rank waits for replies to its own requests.
+  void after_iteration(bool worked, bool waiting = false) {
     if (worked) {
       empty_ = 0;
       sleep_us_ = kFirstSleepUs;
@@ -29,7 +32,7 @@ class IdlePolicy {
     }
     ++empty_;
     ++empty_total_;
-    if (empty_ >= kSleepAfter) {
+    if (empty_ >= kSleepAfter && !waiting) {
       std::this_thread::sleep_for(std::chrono::microseconds(sleep_us_));
       sleep_us_ = std::min(sleep_us_ * 2, kMaxSleepUs);
       ++sleeps_;
