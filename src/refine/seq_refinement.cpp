@@ -306,13 +306,13 @@ class Refiner {
       piece2 = std::min(piece2, l2);
     }
     res_.stats.h = std::min(res_.stats.h, std::sqrt(piece2));
-    const std::string name = m_.surf.segment_name(x.segment);
-    const surface::SplitResult r = split_subsegment_at(m_.surf, sub, where.p);
-    const Point p = m_.surf.point(r.vertex);
+    // T's cavity first, D's split second: the step decides before it changes anything
+    // (docs/parallel.md: a step that must fetch tets from another submesh is dropped).
     bool outside = false;
-    if (!plan(p, hint, cav_, outside))
-      throw RefineError("refine.split: the split point " + point_text(p) + " of " + name +
-                        " is already a vertex");
+    if (!plan(where.p, hint, cav_, outside))
+      throw RefineError("refine.split: the split point " + point_text(where.p) + " of " +
+                        m_.surf.segment_name(x.segment) + " is already a vertex");
+    const surface::SplitResult r = split_subsegment_at(m_.surf, sub, where.p);
     const VertexId v = insert(cav_, r.vertex);
     ++res_.stats.subsegment_splits;
     after_insert(v, "subsegment", piece2);
