@@ -123,6 +123,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   summary.set("admissible", an.report.admissible);
   const nlohmann::json report = domain::to_json(an.report);
   summary.set("admissibility_violations", report.at("admissibility").at("violations"));
+  // Angle tests a hair off 90 or 270 degrees, read as right angles (domain/angles.hpp).
+  summary.set("right_angles_within_tolerance", an.report.right_within_tolerance);
   // Facets accepted as planar only within the documented relative tolerance (README).
   summary.set("planarity", report.at("planarity"));
   summary.set("d", an.report.feature.d);

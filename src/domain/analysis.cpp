@@ -80,6 +80,7 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
   for (std::uint32_t f : dom.tolerance_facets)
     r.tolerance_facets.push_back({f, plc.facets[f].line, dom.facets[f].plane.max_deviation});
   r.admissible = adm.admissible;
+  r.right_within_tolerance = adm.tolerated;
   r.violations = adm.violations;
   r.angle_stats = adm.stats;
   r.feature = fs;
@@ -111,6 +112,10 @@ std::string render_text(const DomainReport& r) {
   }
   o << "  admissible (paper 1.1, related components at 90..270 deg): "
     << (r.admissible ? "yes" : "no") << "\n";
+  if (r.right_within_tolerance > 0)
+    o << "    " << r.right_within_tolerance
+      << " angle test(s) a hair off 90 or 270 deg, read as right angles (within the planarity "
+         "tolerance)\n";
   for (int k = 0; k < angle_kinds; ++k) {
     const AngleStats& s = r.angle_stats[k];
     o << "    " << angle_kind_name(static_cast<AngleKind>(k)) << ": " << s.pairs << " pairs";
@@ -167,7 +172,10 @@ nlohmann::json to_json(const DomainReport& r) {
     e["facets"] = facs;
     viol.push_back(e);
   }
-  j["admissibility"] = {{"admissible", r.admissible}, {"angles", stats}, {"violations", viol}};
+  j["admissibility"] = {{"admissible", r.admissible},
+                        {"right_within_tolerance", r.right_within_tolerance},
+                        {"angles", stats},
+                        {"violations", viol}};
   json d = {{"d", nullptr}, {"min_distance", nullptr}};
   if (std::isfinite(r.feature.d)) {
     d["d"] = r.feature.d;

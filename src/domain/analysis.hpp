@@ -41,6 +41,7 @@ struct DomainReport {
   double planarity_tolerance = 0;
   std::vector<ToleranceFacet> tolerance_facets;  // accepted as planar within tolerance
   bool admissible = true;
+  std::size_t right_within_tolerance = 0;  // angle tests read as 90° or 270° (angles.hpp)
   std::vector<AngleRecord> violations;
   std::array<AngleStats, angle_kinds> angle_stats{};
   FeatureSize feature;                  // d and the closest unrelated pair

@@ -45,13 +45,38 @@ double ray_cone_deg(const Vec& s, const Vec& r1, const Vec& r2) {
   return std::min(angle_deg(s, r1), angle_deg(s, r2));
 }
 
+// Whether the angle at o between a and b is acute as the input means it: the exact sign
+// of the cosine is positive, and the cosine exceeds the planarity tolerance `tol` (the
+// relative tolerance that classifies imprecise input, domain/domain.hpp). A right angle
+// that rounding bent below 90° by less than that (a rotated box) is a right angle; the
+// cosine's floating-point error (a few ulps) is far below any useful tolerance.
+bool acute(const Point& o, const Point& a, const Point& b, double tol, std::size_t& tolerated) {
+  if (dot_sign(o, a, b) != Sign::Positive) return false;
+  const Vec x = sub(a, o), y = sub(b, o);
+  if (dot(x, y) > tol * norm(x) * norm(y)) return true;
+  ++tolerated;
+  return false;
+}
+
+// The same for the dihedral angle along p-q between the half-planes through a and b.
+bool acute_dihedral(const Point& p, const Point& q, const Point& a, const Point& b, double tol,
+                    std::size_t& tolerated) {
+  if (dihedral_cos_sign(p, q, a, b) != Sign::Positive) return false;
+  const Vec u = sub(q, p);
+  const Vec x = cross(u, sub(a, p)), y = cross(u, sub(b, p));
+  if (dot(x, y) > tol * norm(x) * norm(y)) return true;
+  ++tolerated;
+  return false;
+}
+
 struct Corner {
   std::uint32_t x, y;  // the triangle's other corners, counter-clockwise after v
 };
 
 class Checker {
  public:
-  explicit Checker(const PlcDomain& dom) : dom_(dom), pts_(dom.plc.points) {
+  explicit Checker(const PlcDomain& dom)
+      : dom_(dom), pts_(dom.plc.points), tol_(dom.options.planarity_tolerance) {
     corners_.resize(dom.facets.size());
     for (std::size_t f = 0; f < dom.facets.size(); ++f) {
       for (const FacetTri& t : dom.facets[f].tris)
@@ -146,7 +171,7 @@ class Checker {
         } else {
           r.degrees = angle_deg(sub(pts_[a], pts_[v]), sub(pts_[b], pts_[v]));
         }
-        record(std::move(r), dot_sign(pts_[v], pts_[a], pts_[b]) == Sign::Positive);
+        record(std::move(r), acute(pts_[v], pts_[a], pts_[b], tol_, out_.tolerated));
       }
   }
 
@@ -162,8 +187,8 @@ class Checker {
         double deg = 180;
         for (const Corner& c : cs) {
           deg = std::min(deg, ray_cone_deg(sv, sub(pts_[c.x], pts_[v]), sub(pts_[c.y], pts_[v])));
-          violation = violation || dot_sign(pts_[v], pts_[w], pts_[c.x]) == Sign::Positive ||
-                      dot_sign(pts_[v], pts_[w], pts_[c.y]) == Sign::Positive;
+          violation = violation || acute(pts_[v], pts_[w], pts_[c.x], tol_, out_.tolerated) ||
+                      acute(pts_[v], pts_[w], pts_[c.y], tol_, out_.tolerated);
         }
         AngleRecord r;
         r.kind = AngleKind::FacetSegment;
@@ -211,7 +236,7 @@ class Checker {
                             ray_cone_deg(b1, a1, a2), ray_cone_deg(b2, a1, a2)});
             for (std::uint32_t g : {a.x, a.y})
               for (std::uint32_t h : {b.x, b.y})
-                violation = violation || dot_sign(pts_[v], pts_[g], pts_[h]) == Sign::Positive;
+                violation = violation || acute(pts_[v], pts_[g], pts_[h], tol_, out_.tolerated);
           }
         AngleRecord r;
         r.kind = AngleKind::FacetFacetVertex;
@@ -247,13 +272,13 @@ class Checker {
       r.degrees = theta;
       r.segments = {ends(s)};
       r.facets = {x.facet, y.facet};
-      record(std::move(r),
-             dihedral_cos_sign(p, q, pts_[x.apex], pts_[y.apex]) == Sign::Positive);
+      record(std::move(r), acute_dihedral(p, q, pts_[x.apex], pts_[y.apex], tol_, out_.tolerated));
     }
   }
 
   const PlcDomain& dom_;
   const std::vector<Point>& pts_;
+  const double tol_;
   std::vector<std::vector<std::pair<std::uint32_t, Corner>>> corners_;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, std::uint32_t>> sectors_;
   Admissibility out_;

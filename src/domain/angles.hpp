@@ -38,6 +38,12 @@
 // These signs are exact (domain/exact.hpp), so 90° and 270° are classified exactly; the
 // reported degrees are floating point (a report, not a decision). For a facet planar only
 // within tolerance, the cone is that of its triangles.
+// Input given in floating point bends right angles: a box rotated by a random rotation has
+// angles a few ulps below 90°. The planarity tolerance (PlcOptions::planarity_tolerance,
+// relative, 1e-9 by default, the one that accepts facets planar within rounding) also
+// classifies these: a positive sign whose cosine is at most the tolerance (an angle within
+// about tol radians of 90° or 270°) is the right angle the input means, counted in
+// Admissibility::tolerated. It classifies the input; the mesher never sees it.
 #pragma once
 
 #include <array>
@@ -74,6 +80,7 @@ struct AngleStats {
 
 struct Admissibility {
   bool admissible = true;
+  std::size_t tolerated = 0;  // signs taken as right angles within the tolerance
   std::vector<AngleRecord> violations;
   std::array<AngleStats, angle_kinds> stats{};  // indexed by AngleKind
 };

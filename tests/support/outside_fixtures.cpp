@@ -31,12 +31,18 @@ std::vector<P2d> tee_profile(double w, double yj, double f, double top, double y
 Plc rotated(Plc plc, double a, double b, double c) {
   const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
                cc = std::cos(c), sc = std::sin(c);
-  for (Point& p : plc.points) {
+  const auto turn = [&](Point& p) {
     const double x1 = ca * p[0] - sa * p[1], y1 = sa * p[0] + ca * p[1], z1 = p[2];
     const double x2 = cb * x1 + sb * z1, z2 = -sb * x1 + cb * z1;
     const double y3 = cc * y1 - sc * z2, z3 = sc * y1 + cc * z2;
     p = {x2, y3, z3};
-  }
+  };
+  for (Point& p : plc.points) turn(p);
+  // Every point the domain holds turns with it: volume and facet holes, region points.
+  for (Point& p : plc.holes) turn(p);
+  for (PlcFacet& f : plc.facets)
+    for (Point& p : f.holes) turn(p);
+  for (PlcRegion& r : plc.regions) turn(r.point);
   return plc;
 }
 
