@@ -75,4 +75,12 @@ Sign in_equatorial_ball(const Point& a, const Point& b, const Point& c, const Po
 }
 
 }  // namespace exact
+Sign compare_circumradius(const Point& a, const Point& b, const Point& c, const Point& d,
+                          const Point& e, const Point& f) {
+  const Filtered quick = filter::circumradius_compare(a, b, c, d, e, f);
+  if (quick != Filtered::Unsure) return quick == Filtered::Positive ? Sign::Positive : Sign::Negative;
+  const int c3 = cmp(exact::triangle_circumradius2(a, b, c), exact::triangle_circumradius2(d, e, f));
+  return c3 > 0 ? Sign::Positive : (c3 < 0 ? Sign::Negative : Sign::Zero);
+}
+
 }  // namespace pdr

@@ -36,6 +36,14 @@ Sign in_diametral_ball(const Point& a, const Point& b, const Point& p);
 // Precondition: a, b, c not collinear (N > 0); callers hold proper triangles.
 Sign in_equatorial_ball(const Point& a, const Point& b, const Point& c, const Point& p);
 
+// The sign of R(abc)^2 - R(def)^2, exactly: which of two triangles has the larger
+// circumradius (Fig. 2's "the largest encroached subfacet"). Precondition: both proper.
+// Laws: antisymmetric (swapping the triangles flips the sign); invariant under a
+// permutation of either triangle's vertices. A filter (geom/filter_kit.hpp) first; GMP
+// when it is unsure (equal or nearly equal radii).
+Sign compare_circumradius(const Point& a, const Point& b, const Point& c, const Point& d,
+                          const Point& e, const Point& f);
+
 namespace exact {
 
 // The circumcenter of triangle abc in its plane, as exact rationals (precondition: a, b,

@@ -340,4 +340,38 @@ inline Filtered chart_incircle(const Point& t0, const Point& t1, const Point& t2
   return sign_beyond(det, 22 * unit_roundoff * bar);
 }
 
+// Which of two triangles has the larger circumradius (Fig. 2's "largest encroached
+// subfacet"): R^2 = |ab|^2 |bc|^2 |ca|^2 / (4 |ab x ac|^2), so R1^2 - R2^2 has the sign of
+// L1 N2 - L2 N1, L the product of the squared edge lengths, N = |ab x ac|^2. Counts: each
+// |e|^2 K = 5 (coefficient 6u, its own absolute value); a cross component K = 3
+// (coefficient 4u of the absolute program). Both enter Brackets and the products are
+// carried there (degree 10: beyond double's range a bound is infinite, hence Unsure).
+// Range: the edges as entry_in_range. Unsure when a triangle may be flat (N's lower end
+// 0) or the brackets overlap (equal radii among them): GMP decides.
+inline Filtered circumradius_compare(const Point& a, const Point& b, const Point& c,
+                                     const Point& d, const Point& e, const Point& f) {
+  struct Parts {
+    Bracket l, n;
+  };
+  const auto parts = [](const Point& p, const Point& q, const Point& r) -> std::optional<Parts> {
+    const Point u = sub(q, p), v = sub(r, p), w = sub(r, q);
+    if (!entry_in_range(u) || !entry_in_range(v) || !entry_in_range(w)) return std::nullopt;
+    const double lu = dot(u, u), lv = dot(v, v), lw = dot(w, w);
+    const double k = 6 * unit_roundoff;
+    Parts out{magnitude_within(lu, k * lu) * magnitude_within(lv, k * lv) *
+                  magnitude_within(lw, k * lw),
+              {0, 0}};
+    const Point n = cross(u, v), na = cross_abs(u, v);
+    for (int i = 0; i < 3; ++i) {
+      const Bracket m = magnitude_within(n[i], 4 * unit_roundoff * na[i]);
+      out.n = out.n + m * m;
+    }
+    if (out.n.lo == 0) return std::nullopt;
+    return out;
+  };
+  const auto x = parts(a, b, c), y = parts(d, e, f);
+  if (!x || !y) return Filtered::Unsure;
+  return compare(x->l * y->n, y->l * x->n);
+}
+
 }  // namespace pdr::filter

@@ -20,8 +20,8 @@ std::optional<std::uint32_t> closure_encroached_subsegment(const VolumeMesh& m,
                                                            ClosureTets tets, const Point& p);
 
 // The subfacet of largest circumradius among the faces of the tets whose closed
-// equatorial ball holds p (Fig. 2 "f <- max radius(f) that p encroaches"); the radius is
-// a floating-point choice among encroached subfacets, not a decision.
+// equatorial ball holds p (Fig. 2 "f <- max radius(f) that p encroaches"), compared
+// exactly (geom/encroach.hpp); equal radii: the smaller sorted vertex coordinates.
 std::optional<std::uint32_t> closure_encroached_subfacet(const VolumeMesh& m,
                                                          ClosureTets tets, const Point& p);
 

@@ -77,6 +77,50 @@ TEST(Encroach, FilterAgreesWithGmp) {
   }
 }
 
+// Which triangle has the larger circumradius (Fig. 2's largest encroached subfacet): the
+// filtered comparison agrees with GMP on random triangles, on congruent copies (exact
+// ties: the copy is the triangle with its vertices rotated, or translated by a power of
+// two, which is exact), and on copies with one vertex moved by an ulp or two (the
+// filter's bound); it is antisymmetric; out of the filter's range it is still exact.
+TEST(Encroach, CircumradiusComparisonAgreesWithGmp) {
+  const auto reference = [](const Point& a, const Point& b, const Point& c, const Point& d,
+                            const Point& e, const Point& f) {
+    const int k = cmp(exact::triangle_circumradius2(a, b, c), exact::triangle_circumradius2(d, e, f));
+    return k > 0 ? Sign::Positive : (k < 0 ? Sign::Negative : Sign::Zero);
+  };
+  geomgen::Rng r(17);
+  int ties = 0, near = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Point a = r.unit_point(), b = r.unit_point(), c = r.unit_point();
+    if (collinear3(a, b, c)) continue;
+    Point d, e, f;
+    switch (i % 4) {
+      case 0: d = r.unit_point(), e = r.unit_point(), f = r.unit_point(); break;
+      case 1: d = b, e = c, f = a; break;  // the same triangle
+      case 2: {                            // translated exactly by a power of two
+        const Point t{4, -8, 16};
+        d = {a[0] + t[0], a[1] + t[1], a[2] + t[2]};
+        e = {b[0] + t[0], b[1] + t[1], b[2] + t[2]};
+        f = {c[0] + t[0], c[1] + t[1], c[2] + t[2]};
+        break;
+      }
+      default: d = r.nudge(a, 2), e = b, f = c; break;  // a vertex moved by a few ulps
+    }
+    if (collinear3(d, e, f)) continue;
+    const Sign want = reference(a, b, c, d, e, f);
+    ties += want == Sign::Zero;
+    near += i % 4 == 3;
+    ASSERT_EQ(compare_circumradius(a, b, c, d, e, f), want) << i;
+    ASSERT_EQ(compare_circumradius(d, e, f, a, b, c), -want) << i;
+  }
+  EXPECT_GT(ties, 1000);
+  EXPECT_GT(near, 1000);
+  const double t = 0x1p-200;  // below the filter's range
+  EXPECT_EQ(compare_circumradius({0, 0, 0}, {2 * t, 0, 0}, {0, 2 * t, 0}, {0, 0, 0}, {t, 0, 0},
+                                 {0, t, 0}),
+            Sign::Positive);
+}
+
 TEST(Encroach, OutOfFilterRangeStillExact) {
   const double t = 0x1p-200;
   const Point a{0, 0, 0}, b{2 * t, 0, 0}, c{0, 2 * t, 0};
