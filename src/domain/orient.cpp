@@ -12,13 +12,13 @@
 //      inward(next) = -inward(this) * dir(this) * dir(next);
 //   3. each connected component ("shell") is seeded by an exact ray from a rational
 //      point inside one of its triangles along the axis of that triangle's largest normal
-//      component, counting proper crossings (orient3d / orient2d of the rational point,
-//      domain/exact.hpp: a floating-point filter, then GMP); a ray that touches an edge or a
-//      vertex, or runs in a triangle's plane, is discarded and another point is tried.
-// Hole points are tested the same way with rays from the point itself (axis rays first,
-// then fixed pseudo-random directions), counting crossings per shell.
+//      component, counting crossings (orient3d / orient2d of the rational point,
+//      domain/exact.hpp: a floating-point filter, then GMP); the ray's origin is moved
+//      symbolically off every edge line it meets, so one ray always decides, whatever
+//      the input's symmetry (crosses() below).
+// Hole points are tested the same way with one axis ray from the point itself, counting
+// crossings per shell.
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include "domain/bvh.hpp"
@@ -35,40 +35,40 @@ struct TriRef {
   std::uint32_t facet, tri;
 };
 
-enum class Hit : std::uint8_t { Miss, Cross, Degenerate };
+// The sign of orient2d_rat(axis, p, q, o) for o moved by (eps, eps^2) in the two
+// coordinates kept, i = axis + 1 and j = axis + 2 (mod 3), when o lies on the line pq
+// (Simulation of Simplicity): the value (q_i - p_i)(o_j - p_j) - (q_j - p_j)(o_i - p_i)
+// gains -(q_j - p_j) eps + (q_i - p_i) eps^2. Exact: two comparisons of input doubles.
+// Precondition: p and q differ in the kept coordinates.
+Sign perturbed_edge_sign(int axis, const Point& p, const Point& q) {
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  if (p[j] != q[j]) return p[j] > q[j] ? Sign::Positive : Sign::Negative;
+  return q[i] > p[i] ? Sign::Positive : Sign::Negative;
+}
 
-// The ray from o along direction dir * e_axis against the closed triangle abc.
+// The ray from o along direction dir * e_axis against the closed triangle abc, with o
+// symbolically moved off every line and plane it lies on (above): the ray then never
+// touches an edge or a vertex, and never runs in a triangle's plane, so one ray decides.
 // Precondition: o lies in no triangle but the skipped one. The ray meets the triangle's
 // plane at o + t dir e_axis with t = -n.(o - a) / (dir n_axis), n = (b-a)x(c-a); it
 // crosses the triangle iff t > 0 and the projection of o (dropping the axis) lies inside
-// the projected triangle, whose orientation is sign(n_axis). Touching an edge or a
-// vertex, or running inside the triangle's plane, is degenerate.
-Hit classify_axis(const RatPoint& o, int axis, int dir, const Point& a, const Point& b,
-                  const Point& c) {
+// the projected triangle, whose orientation is sign(n_axis). A triangle parallel to the
+// axis (n_axis = 0) projects to a segment, which the moved o misses; o in a triangle's
+// plane (outside it, by the precondition) meets it only at t = 0: a miss. The moved o is
+// on the same side of every edge line for the two triangles that share the edge, so a
+// ray through an edge or a vertex counts the crossing once.
+bool crosses(const RatPoint& o, int axis, int dir, const Point& a, const Point& b, const Point& c) {
   const Sign nk = orient2d_dropping(axis, a, b, c);
+  if (nk == Sign::Zero) return false;
   const Sign so = orient3d_rat(a, b, c, o);
-  if (nk == Sign::Zero) return so == Sign::Zero ? Hit::Degenerate : Hit::Miss;
-  if (so == Sign::Zero) return Hit::Miss;  // o in the plane but outside the triangle
-  if (to_int(so) != -dir * to_int(nk)) return Hit::Miss;  // the plane is behind o
-  const Sign e1 = orient2d_rat(axis, a, b, o) * nk, e2 = orient2d_rat(axis, b, c, o) * nk,
-             e3 = orient2d_rat(axis, c, a, o) * nk;
-  if (e1 == Sign::Negative || e2 == Sign::Negative || e3 == Sign::Negative) return Hit::Miss;
-  if (e1 == Sign::Zero || e2 == Sign::Zero || e3 == Sign::Zero) return Hit::Degenerate;
-  return Hit::Cross;
-}
-
-// The segment o -> f (f beyond every bounding box) against the closed triangle abc, all
-// input doubles. Precondition: o lies in no triangle.
-Hit classify_segment(const Point& o, const Point& f, const Point& a, const Point& b, const Point& c) {
-  const Sign so = orient3d(a, b, c, o), sf = orient3d(a, b, c, f);
-  if (so == Sign::Zero && sf == Sign::Zero) return Hit::Degenerate;
-  if (so == sf || so == Sign::Zero || sf == Sign::Zero) return Hit::Miss;
-  const Sign s1 = orient3d(o, f, a, b), s2 = orient3d(o, f, b, c), s3 = orient3d(o, f, c, a);
-  const bool neg = s1 == Sign::Negative || s2 == Sign::Negative || s3 == Sign::Negative;
-  const bool pos = s1 == Sign::Positive || s2 == Sign::Positive || s3 == Sign::Positive;
-  if (neg && pos) return Hit::Miss;
-  if (s1 == Sign::Zero || s2 == Sign::Zero || s3 == Sign::Zero) return Hit::Degenerate;
-  return Hit::Cross;
+  if (so == Sign::Zero) return false;
+  if (to_int(so) != -dir * to_int(nk)) return false;  // the plane is behind o
+  const auto inner = [&](const Point& p, const Point& q) {
+    Sign e = orient2d_rat(axis, p, q, o);
+    if (e == Sign::Zero) e = perturbed_edge_sign(axis, p, q);
+    return e * nk == Sign::Positive;
+  };
+  return inner(a, b) && inner(b, c) && inner(c, a);
 }
 
 class RayCaster {
@@ -89,13 +89,11 @@ class RayCaster {
   const Box& bounds() const { return all_; }
   const Bvh& bvh() const { return bvh_; }
 
-  // Crossings per shell of the ray from o along dir * e_axis, skipping triangle `skip`
-  // (numbered as in tris()); false if the ray is degenerate. Boxes are filtered with the
-  // floating-point shadow of o widened by its error (a superset of the exact test).
-  bool cast_axis(const RatPoint& o, int axis, int dir, std::int64_t skip,
-                 std::vector<int>& crossings) const {
-    crossings.assign(dom_.shells, 0);
-    bool ok = true;
+  // Crossings per shell of the ray from o along dir * e_axis (symbolically perturbed:
+  // crosses()), skipping triangle `skip` (numbered as in tris()). Boxes are filtered with
+  // the floating-point shadow of o widened by its error (a superset of the exact test).
+  std::vector<int> cast_axis(const RatPoint& o, int axis, int dir, std::int64_t skip) const {
+    std::vector<int> crossings(dom_.shells, 0);
     auto keep = [&](const Box& b) {
       for (int j = 0; j < 3; ++j) {
         if (j == axis) continue;
@@ -104,24 +102,11 @@ class RayCaster {
       return dir > 0 ? o.d[axis] - o.err <= b.hi[axis] : o.d[axis] + o.err >= b.lo[axis];
     };
     bvh_.for_each_kept(keep, [&](std::uint32_t i) {
-      if (!ok || static_cast<std::int64_t>(i) == skip) return;
-      const Hit h = classify_axis(o, axis, dir, point(i, 0), point(i, 1), point(i, 2));
-      if (h == Hit::Degenerate) ok = false;
-      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
+      if (static_cast<std::int64_t>(i) == skip) return;
+      if (crosses(o, axis, dir, point(i, 0), point(i, 1), point(i, 2)))
+        ++crossings[dom_.facets[tris_[i].facet].shell];
     });
-    return ok;
-  }
-
-  // Crossings per shell of the segment o -> f (f beyond every box); every triangle is
-  // tested (used only for the rare hole points whose axis rays are all degenerate).
-  bool cast_segment(const Point& o, const Point& f, std::vector<int>& crossings) const {
-    crossings.assign(dom_.shells, 0);
-    for (std::uint32_t i = 0; i < tris_.size(); ++i) {
-      const Hit h = classify_segment(o, f, point(i, 0), point(i, 1), point(i, 2));
-      if (h == Hit::Degenerate) return false;
-      if (h == Hit::Cross) ++crossings[dom_.facets[tris_[i].facet].shell];
-    }
-    return true;
+    return crossings;
   }
 
  private:
@@ -207,37 +192,24 @@ void orient_boundary(PlcDomain& dom) {
 
   const RayCaster rays(dom);
   for (std::size_t c = 0; c < seeds.size(); ++c) {
-    // Seed: a ray from a rational point inside a triangle of the component.
-    std::size_t g = seeds[c];
-    std::int8_t seed_inward = 0;
-    for (int attempt = 0; attempt < 200 && seed_inward == 0; ++attempt) {
-      if (attempt > 0 && attempt % 8 == 0) {  // try another triangle of the component
-        for (std::size_t h = g + 1; h < n; ++h)
-          if (comp[h] == static_cast<int>(c)) {
-            g = h;
-            break;
-          }
-      }
-      const std::uint32_t f = facet_of(g);
-      const FacetTri& t = dom.facets[f].tris[g - offset[f]];
-      const Point &a = pts[t.v[0]], &b = pts[t.v[1]], &cc = pts[t.v[2]];
-      const int axis = nondegenerate_drop(a, b, cc);
-      const Sign nk = orient2d_dropping(axis, a, b, cc);
-      const mpq_class w1(3 + 2 * attempt), w2(5 + 3 * attempt), w3(7 + 5 * attempt);
-      const mpq_class sum = w1 + w2 + w3;
-      QPoint q;
-      for (int k = 0; k < 3; ++k)
-        q[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
-      std::vector<int> crossings;
-      // RayCaster numbers triangles as g.
-      if (!rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g), crossings)) continue;
-      int total = 0;
-      for (int x : crossings) total += x;
-      // The ray leaves along +axis, i.e. to the side of the normal iff n_axis > 0; that
-      // side is in the domain iff the ray crosses the boundary an odd number of times.
-      seed_inward = static_cast<std::int8_t>((nk == Sign::Positive ? 1 : -1) * (total % 2 ? 1 : -1));
-    }
-    if (seed_inward == 0) throw std::logic_error("plc_orient: no non-degenerate ray found");
+    // Seed: a ray from a rational point strictly inside a triangle of the component.
+    const std::size_t g = seeds[c];
+    const std::uint32_t f = facet_of(g);
+    const FacetTri& t = dom.facets[f].tris[g - offset[f]];
+    const Point &a = pts[t.v[0]], &b = pts[t.v[1]], &cc = pts[t.v[2]];
+    const int axis = nondegenerate_drop(a, b, cc);
+    const Sign nk = orient2d_dropping(axis, a, b, cc);
+    const mpq_class w1(3), w2(5), w3(7), sum(15);
+    QPoint q;
+    for (int k = 0; k < 3; ++k)
+      q[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
+    int total = 0;
+    // RayCaster numbers triangles as g.
+    for (int x : rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g))) total += x;
+    // The ray leaves along +axis, i.e. to the side of the normal iff n_axis > 0; that
+    // side is in the domain iff the ray crosses the boundary an odd number of times.
+    const auto seed_inward =
+        static_cast<std::int8_t>((nk == Sign::Positive ? 1 : -1) * (total % 2 ? 1 : -1));
     inward[g] = seed_inward;
     std::vector<std::size_t> stack{g};
     while (!stack.empty()) {
@@ -283,28 +255,7 @@ void check_volume_holes(const PlcDomain& dom) {
              "volume hole off facets: " + which + " lies on " +
                  facet_name(plc, rays.tris()[k].facet) + "; move it into the void it marks");
     });
-    std::vector<int> crossings;
-    bool done = false;
-    for (int attempt = 0; attempt < 6 && !done; ++attempt)
-      done = rays.cast_axis(make_rat(h), attempt / 2, attempt % 2 ? -1 : 1, -1, crossings);
-    // Rays in fixed pseudo-random directions (reproducible), long enough to leave every box.
-    const Box& all = rays.bounds();
-    double reach = 1;
-    for (int k = 0; k < 3; ++k)
-      reach += (all.hi[k] - all.lo[k]) + std::fabs(h[k] - 0.5 * (all.lo[k] + all.hi[k]));
-    std::uint64_t state = 0x9E3779B97F4A7C15ull;
-    for (int attempt = 0; attempt < 64 && !done; ++attempt) {
-      Point dir;
-      for (double& x : dir) {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        x = static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
-      }
-      const double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-      Point far;
-      for (int k = 0; k < 3; ++k) far[k] = h[k] + 2 * reach * dir[k] / len;
-      done = rays.cast_segment(h, far, crossings);
-    }
-    if (!done) throw std::logic_error("plc_orient: no non-degenerate ray from a hole point");
+    const std::vector<int> crossings = rays.cast_axis(make_rat(h), 0, +1, -1);
     int total = 0, enclosing = 0;
     for (int x : crossings) {
       total += x;
