@@ -7,8 +7,9 @@
 // markers), check (check_mesh with the domain and --ratio B, unless --no-check).
 // Exit codes (exit_codes.hpp): 0 ok; 1 the checker found violations (a bug); 2 invalid
 // input (InputError, file:line); 3 some tet kept ratio >= B (each listed with its reason:
-// a domain outside the theory); 4 an internal invariant failed (RefineError,
-// SurfaceError: a bug, or an inadmissible domain the guards did not catch).
+// a domain outside the theory, or a vertex cap reached: in the surface phase nothing is
+// written); 4 an internal invariant failed (RefineError, SurfaceError: a bug, or an
+// inadmissible domain the guards did not catch).
 #include <unistd.h>
 
 #include <algorithm>
@@ -136,7 +137,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   opt.admissible = an.report.admissible;
   opt.acute_vertices = refine::acute_vertices(an.report);  // the guards' shells
   opt.progress = opt.progress || isatty(STDERR_FILENO) == 1;
-  surface::SurfaceInit si = surface::init_surface(an);
+  surface::SurfaceOptions so;
+  so.max_vertices = args.options.max_vertices;  // --max-vertices bounds every phase
+  surface::SurfaceInit si = surface::init_surface(an, so);
   summary.set("surface_vertices", si.mesh.vertex_count());
   summary.set("subfacets", si.mesh.live_subfacets());
   timer.lap("surface");
@@ -257,6 +260,13 @@ int run_mesh(const MeshArgs& args) {
     summary.print(args.json);
     std::cerr << "pdr: " << e.what() << "\n";
     return kExitInternal;
+  } catch (const surface::SurfaceCapError& e) {
+    // A resource limit, not a bug: nothing is written, and the run says why (exit 3).
+    summary.set("quality", "NOT GUARANTEED: stopped before meshing, nothing written");
+    summary.set("stop_reason", e.what());
+    summary.print(args.json);
+    std::cerr << "pdr: stopped: " << e.what() << "\n";
+    return kExitNotGuaranteed;
   } catch (const surface::SurfaceError& e) {
     summary.set("error", e.what());
     summary.print(args.json);

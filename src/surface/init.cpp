@@ -1,6 +1,8 @@
 // Mesh initialization, paper §2.1 steps 1 and 2; see surface/init.hpp.
 #include "surface/init.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -41,7 +43,11 @@ std::size_t vertex_cap(const SurfaceMesh& m, double d, const SurfaceOptions& o) 
     if (t.alive) area += triangle_area(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]));
   const double derived =
       static_cast<double>(m.vertex_count()) + 16 * (length / d + area / (d * d)) + 1024;
-  const double limit = static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2);
+  double limit = static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2);
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages > 0 && page > 0)
+    limit = std::min(limit, static_cast<double>(pages) * static_cast<double>(page) / 4 /
+                                static_cast<double>(kSurfaceVertexBytes));
   auto cap = static_cast<std::size_t>(std::min(derived, limit));
   if (o.max_vertices != 0) cap = std::min(cap, o.max_vertices);
   return cap;
@@ -103,12 +109,14 @@ class Initializer {
 
   void guard(const std::string& where) const {
     if (m_.vertex_count() < cap_) return;
-    throw SurfaceError("surface.guard: " + where + ": the surface mesh reached " +
-                       std::to_string(m_.vertex_count()) + " vertices, its cap (from the " +
-                       "domain's size and d = " + number(d_) +
-                       "); refinement does not converge here: the domain is probably "
-                       "inadmissible near it (paper §1.1: angles between related components "
-                       "of 90 to 270 degrees) or d is tiny; see the domain report");
+    throw SurfaceCapError(
+        "surface.cap: " + where + ": the surface mesh reached " +
+        std::to_string(m_.vertex_count()) + " vertices, its cap (--max-vertices, else from the " +
+        "domain's size and d = " + number(d_) + ", and a quarter of this machine's memory); "
+        "the uniform surface mesh of paper §2.1 is sized by d, the smallest distance between "
+        "unrelated components (see the domain report for the pair), so a tiny feature makes "
+        "it very fine; or refinement does not converge near an inadmissible angle. Raise "
+        "--max-vertices, or enlarge the small feature");
   }
 
   SurfaceMesh& m_;

@@ -20,11 +20,13 @@
 // d apart, and a packing argument bounds their number by O(L / d + A / d^2) (below).
 // Guard (a run never hangs, even with rounding or inadmissible input): the number of
 // vertices is capped at V_input + 16 (L / d + A / d^2) + 1024 (L: total segment length,
-// A: total facet area, in floating point: a resource limit, not a geometric decision), or
-// at SurfaceOptions::max_vertices when that is set and smaller, and never above 2^31
-// (vertex ids are 32-bit). Reaching it throws
-// SurfaceError("surface.guard: <facet or segment>: ..."). A degenerate cavity (excluded by
-// the exact arguments for coplanar points) throws SurfaceError naming the facet too.
+// A: total facet area, in floating point: a resource limit, not a geometric decision), at
+// what a quarter of the machine's memory holds (kSurfaceVertexBytes a vertex: a domain
+// whose d is tiny beside its size would otherwise run out of memory before the cap), at
+// SurfaceOptions::max_vertices when that is set and smaller, and never above 2^31 (vertex
+// ids are 32-bit). Reaching it throws SurfaceCapError("surface.cap: <facet or segment>:
+// ..."). A degenerate cavity (excluded by the exact arguments for coplanar points) throws
+// SurfaceError naming the facet.
 // d infinite (no two unrelated components) or not positive: nothing is refined.
 #pragma once
 
@@ -35,6 +37,10 @@
 #include "surface/surface_mesh.hpp"
 
 namespace pdr::surface {
+
+// Memory of one surface vertex with its share of subsegments, subfacets and incidence
+// lists, for the memory part of the cap (measured: about 200 bytes; rounded up).
+inline constexpr std::size_t kSurfaceVertexBytes = 256;
 
 struct SurfaceOptions {
   std::size_t max_vertices = 0;  // 0: the derived cap only

@@ -40,6 +40,13 @@ class SurfaceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The surface mesh reached its vertex cap (surface/init.hpp): a resource limit, not a bug;
+// the command line reports it as a run that could not be finished (exit 3).
+class SurfaceCapError : public SurfaceError {
+ public:
+  using SurfaceError::SurfaceError;
+};
+
 enum class HomeKind : std::uint8_t { Input, Segment, Facet, Unused };
 
 struct Home {

@@ -273,11 +273,12 @@ TEST_F(Cli, MeshReportsEachViolatingAngleOfAnInadmissibleDomain) {
   EXPECT_NE(t.out.find("facet-facet"), std::string::npos) << t.out;
 }
 
-// With a vertex cap below what the tee needs, the mesh is written but the quality is not
-// guaranteed: exit 3, with the reason.
+// With a vertex cap above what the tee's surface mesh needs (127 vertices) but below what
+// its refinement needs (129), the mesh is written but the quality is not guaranteed: exit 3,
+// with the reason.
 TEST_F(Cli, MeshThatCannotBeFinishedExits3AndSaysWhy) {
   const Outcome r = run("mesh " + data("tee.poly") + " -o " + path("m") +
-                        " --max-vertices 1 --json");
+                        " --max-vertices 128 --json");
   ASSERT_EQ(r.code, 3) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["quality"].get<std::string>().rfind("NOT GUARANTEED", 0), 0u) << r.out;
@@ -289,11 +290,25 @@ TEST_F(Cli, MeshThatCannotBeFinishedExits3AndSaysWhy) {
 // the run still says "not guaranteed" (exit 3), never success.
 TEST_F(Cli, MeshStoppedByTheCapBeforeTheSizeBoundExits3) {
   const Outcome r = run("mesh " + data("box.poly") + " -o " + path("c") +
-                        " --max-volume 0.001 --max-vertices 1 --json");
+                        " --max-volume 0.001 --max-vertices 40 --json");
   ASSERT_EQ(r.code, 3) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NE(j["quality"].get<std::string>().find("refine.cap"), std::string::npos) << r.out;
   EXPECT_EQ(j["check"], "pass") << r.out;
+}
+
+// --max-vertices bounds the surface phase too (issue #11 item 3): a cap below what the
+// surface mesh of §2.1 needs stops the run there with exit 3 and the reason (the pair of
+// components that makes d small is in the domain report), and nothing is written.
+TEST_F(Cli, MeshStoppedInTheSurfacePhaseExits3AndWritesNothing) {
+  const Outcome r = run("mesh " + data("cube-in-cube.poly") + " -o " + path("s") +
+                        " --max-vertices 50 --json");
+  ASSERT_EQ(r.code, 3) << r.out;
+  const auto j = nlohmann::json::parse(r.out.substr(0, r.out.find("pdr: stopped")));
+  EXPECT_EQ(j["stop_reason"].get<std::string>().rfind("surface.cap: ", 0), 0u) << r.out;
+  EXPECT_EQ(j["quality"].get<std::string>().rfind("NOT GUARANTEED", 0), 0u) << r.out;
+  EXPECT_FALSE(fs::exists(path("s.ele")));
+  EXPECT_FALSE(fs::exists(path("s.node")));
 }
 
 }  // namespace

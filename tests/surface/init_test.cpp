@@ -158,17 +158,17 @@ TEST(SurfaceInit, GuardNamesTheFacet) {
   try {
     (void)init_of(plc, o);
     FAIL() << "the guard did not fire";
-  } catch (const SurfaceError& e) {
+  } catch (const SurfaceCapError& e) {  // a resource limit, its own type (exit 3)
     const std::string msg = e.what();
-    EXPECT_EQ(msg.rfind("surface.guard: facet ", 0), 0u) << msg;
+    EXPECT_EQ(msg.rfind("surface.cap: facet ", 0), 0u) << msg;
     EXPECT_NE(msg.find("box.poly:"), std::string::npos) << msg;
   }
   o.max_vertices = 9;  // step 1 cannot complete: the message names a segment
   try {
     (void)init_of(plc, o);
     FAIL() << "the guard did not fire";
-  } catch (const SurfaceError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("surface.guard: segment ", 0), 0u) << e.what();
+  } catch (const SurfaceCapError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("surface.cap: segment ", 0), 0u) << e.what();
   }
 }
 
