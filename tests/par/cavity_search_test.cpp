@@ -17,6 +17,7 @@
 #include "geom/construct.hpp"
 #include "par/cavity_search.hpp"
 #include "par/par_world.hpp"
+#include "par/point_tets.hpp"
 
 namespace pdr::par {
 namespace {
@@ -158,13 +159,6 @@ TEST(CavitySearch, FindsTheSequentialCavityAcrossSubmeshes) {
               distributed, st.rounds, st.fetched, st.redirects, st.waits);
 }
 
-// A finite tet as its four points, sorted: the same key in any mesh of the same points.
-using PointTet = std::array<Point, 4>;
-PointTet point_tet(std::array<Point, 4> p) {
-  std::sort(p.begin(), p.end());
-  return p;
-}
-
 // Distributed Bowyer-Watson: random points inserted at random submeshes, each through a
 // distributed search and a local commit (Submesh::insert), with migrations and messages
 // in flight between them. The symbolic perturbation makes the Delaunay tetrahedralization
@@ -197,33 +191,20 @@ TEST(CavitySearch, DistributedInsertionGivesTheSequentialDelaunayMesh) {
       }
     }
     drain(w);
-    std::multiset<PointTet> got, want;
+    std::vector<test::PointTet> got, want;
     std::size_t ghosts_got = 0, ghosts_want = 0;
     for (const Submesh& s : w.subs) {
       ASSERT_TRUE(s.check().empty()) << s.check().front();
       EXPECT_EQ(s.waiting_relinks(), 0u);
       const TetStore& ts = s.store();
-      for (TetId t = 0; t < ts.slots(); ++t) {
-        if (!ts.is_alive(t) || ts.is_proxy(t)) continue;
-        if (ts.is_ghost(t)) {
-          ++ghosts_got;
-          continue;
-        }
-        const VertexId* v = ts.vertices(t);
-        got.insert(point_tet({s.points()[v[0]], s.points()[v[1]], s.points()[v[2]], s.points()[v[3]]}));
-      }
+      for (TetId t = 0; t < ts.slots(); ++t) ghosts_got += ts.is_alive(t) && ts.is_ghost(t);
+      test::add_finite_tets(ts, s.points(), got);
     }
     const TetStore& rs = reference.store();
-    for (TetId t = 0; t < rs.slots(); ++t) {
-      if (!rs.is_alive(t)) continue;
-      if (rs.is_ghost(t)) {
-        ++ghosts_want;
-        continue;
-      }
-      const VertexId* v = rs.vertices(t);
-      want.insert(point_tet({reference.point(v[0]), reference.point(v[1]), reference.point(v[2]),
-                             reference.point(v[3])}));
-    }
+    for (TetId t = 0; t < rs.slots(); ++t) ghosts_want += rs.is_alive(t) && rs.is_ghost(t);
+    test::add_finite_tets(rs, reference.points(), want);
+    got = test::sorted(std::move(got));
+    want = test::sorted(std::move(want));
     EXPECT_EQ(ghosts_got, ghosts_want) << "seed " << seed;
     EXPECT_EQ(got.size(), want.size()) << "seed " << seed;
     EXPECT_TRUE(got == want) << "seed " << seed << ": the distributed mesh is not the Delaunay mesh";

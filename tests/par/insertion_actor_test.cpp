@@ -8,32 +8,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <set>
 
 #include "delaunay/delaunay.hpp"
 #include "par/insertion_actor.hpp"
 #include "par/par_meshes.hpp"
 #include "par/partition.hpp"
+#include "par/point_tets.hpp"
 #include "par/sim_network.hpp"
 
 namespace pdr::par {
 namespace {
-
-using PointTet = std::array<Point, 4>;
-PointTet point_tet(std::array<Point, 4> p) {
-  std::sort(p.begin(), p.end());
-  return p;
-}
-
-std::multiset<PointTet> finite_tets(const TetStore& s, std::span<const Point> pts) {
-  std::multiset<PointTet> out;
-  for (TetId t = 0; t < s.slots(); ++t) {
-    if (!s.is_alive(t) || s.vertex(t, 3) >= kFirstSpecialVertex) continue;
-    const VertexId* v = s.vertices(t);
-    out.insert(point_tet({pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]}));
-  }
-  return out;
-}
 
 // Points spread over the box, or all in one small ball that every rank fills at once
 // (the closures meet all the time: the livelock case of §4.3).
@@ -77,14 +61,13 @@ void run_ranks(bool clustered, std::uint64_t first_seed, std::uint64_t last_seed
         done[static_cast<std::size_t>(r)] = true;
       }
     }
-    std::multiset<PointTet> got;
+    std::vector<test::PointTet> got;
     InsertionStats run;
     for (const auto& a : actors) {
       const auto problems = a->submesh().check();
       ASSERT_TRUE(problems.empty()) << "seed " << seed << ": " << problems.front();
       EXPECT_EQ(a->submesh().waiting_relinks(), 0u);
-      const auto part_tets = finite_tets(a->submesh().store(), a->submesh().points());
-      got.insert(part_tets.begin(), part_tets.end());
+      test::add_finite_tets(a->submesh().store(), a->submesh().points(), got);
       const InsertionStats& s = a->stats();
       run.commits += s.commits;
       run.setbacks += s.setbacks;
@@ -96,7 +79,10 @@ void run_ranks(bool clustered, std::uint64_t first_seed, std::uint64_t last_seed
     }
     EXPECT_EQ(run.commits, static_cast<std::uint64_t>(points)) << "seed " << seed;
     EXPECT_EQ(run.duplicates, 0u);
-    const auto want = finite_tets(reference.store(), reference.points());
+    std::vector<test::PointTet> want;
+    test::add_finite_tets(reference.store(), reference.points(), want);
+    got = test::sorted(std::move(got));
+    want = test::sorted(std::move(want));
     EXPECT_EQ(got.size(), want.size()) << "seed " << seed;
     EXPECT_TRUE(got == want) << "seed " << seed << ": not the Delaunay tetrahedralization";
     std::printf("%s seed %llu, %d ranks: %llu commits, %llu rounds, %llu setbacks, %llu refusals, "

@@ -19,39 +19,16 @@
 #include "par/mpi_transport.hpp"
 #include "par/par_meshes.hpp"
 #include "par/partition.hpp"
-
-namespace {
-
-using namespace pdr;
-using Quad = std::array<double, 12>;  // a finite tet: its four points, sorted
-
-Quad quad(std::array<Point, 4> p) {
-  std::sort(p.begin(), p.end());
-  Quad q;
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) q[static_cast<std::size_t>(3 * i + k)] = p[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)];
-  return q;
-}
-
-std::vector<Quad> finite_tets(const TetStore& s, std::span<const Point> pts) {
-  std::vector<Quad> out;
-  for (TetId t = 0; t < s.slots(); ++t) {
-    if (!s.is_alive(t) || s.vertex(t, 3) >= kFirstSpecialVertex) continue;
-    const VertexId* v = s.vertices(t);
-    out.push_back(quad({pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]}));
-  }
-  return out;
-}
-
-}  // namespace
+#include "par/point_tets.hpp"
 
 int main(int argc, char** argv) {
+  using namespace pdr;
   using namespace pdr::par;
   MpiSession session(&argc, &argv);
   const int points = argc > 1 ? std::atoi(argv[1]) : 400;
   const bool ball = argc > 2 && std::strcmp(argv[2], "ball") == 0;
   const int rank = session.rank(), size = session.size();
-  std::vector<Quad> mine;
+  std::vector<test::PointTet> mine;
   std::vector<Point> all_points;
   InsertionStats st;
   try {
@@ -76,7 +53,7 @@ int main(int argc, char** argv) {
                            !actor.idle());
       before = now;
     }
-    mine = finite_tets(actor.submesh().store(), actor.submesh().points());
+    test::add_finite_tets(actor.submesh().store(), actor.submesh().points(), mine);
     st = actor.stats();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rank %d: %s\n", rank, e.what());
@@ -93,13 +70,14 @@ int main(int argc, char** argv) {
   std::uint64_t local[3] = {st.commits, st.setbacks, st.tets_sent}, sums[3] = {0, 0, 0};
   MPI_Reduce(local, sums, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
   if (rank != 0) return 0;
-  std::vector<Quad> got(static_cast<std::size_t>(total / 12));
+  std::vector<test::PointTet> got(static_cast<std::size_t>(total / 12));
   std::memcpy(got.data(), gathered.data(), gathered.size() * sizeof(double));
   Delaunay reference = test::cube_in_cube().dt;
   for (const Point& p : all_points) reference.insert(p);
-  std::vector<Quad> want = finite_tets(reference.store(), reference.points());
-  std::sort(got.begin(), got.end());
-  std::sort(want.begin(), want.end());
+  std::vector<test::PointTet> want;
+  test::add_finite_tets(reference.store(), reference.points(), want);
+  got = test::sorted(std::move(got));
+  want = test::sorted(std::move(want));
   const bool same = got == want;
   std::printf("ranks %d, %d points%s: %llu commits, %llu setbacks, %llu tets migrated; %zu tets, "
               "%s the sequential Delaunay tetrahedralization (%zu tets)\n",
