@@ -64,20 +64,10 @@ rc::Gen<Sizing> gen_fine_sizing(const Plc& plc) {
 // Runs `pdr mesh` in process (no files, check on, B = 2); "" when the run ends as the
 // property says, else why not.
 std::string outside_failure(const Plc& plc, const Sizing& z, bool* admissible = nullptr) {
-  app::MeshArgs args;
-  args.prefix = "unused";
-  args.formats.clear();
-  args.options.ratio = 2.0;
-  args.options.max_volume = z.max_volume;
-  args.options.size = z.size;
-  app::Summary summary;
-  int code = -1;
-  try {
-    code = app::mesh_plc(plc, args, summary);
-  } catch (const std::exception& e) {
-    return std::string("exception: ") + e.what();
-  }
-  const auto j = summary.to_json();
+  nlohmann::json j;
+  std::string error;
+  const int code = run_mesh(plc, z, false, j, &error);
+  if (code < 0) return error;
   if (admissible) *admissible = j.value("admissible", false);
   std::string why;
   if (code != 0 && code != 3) why += "exit code " + std::to_string(code) + "; ";
@@ -89,7 +79,7 @@ std::string outside_failure(const Plc& plc, const Sizing& z, bool* admissible = 
       const bool allowed = id == "quality.ratio" || id.rfind("encroachment.", 0) == 0;
       if (!allowed || code != 3) why += "check " + id + " fails; ";
     }
-  if (!why.empty()) why += "\n" + summary.to_text();
+  if (!why.empty()) why += "\n" + j.dump(1);
   return why;
 }
 

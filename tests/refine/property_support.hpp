@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "app/commands.hpp"
 #include "mesh/plc.hpp"
 
 namespace pdr::refine::test {
@@ -138,6 +139,29 @@ bool register_replays(const char* suite, const std::string& prefix,
                             });
   }
   return true;
+}
+
+// The `pdr mesh` pipeline on plc with the sizing z (ratio 2, no files written, the Lemma 1
+// audit when `audit`): its exit code and summary, or the exception it threw (its text in
+// *error, code -1).
+inline int run_mesh(const Plc& plc, const Sizing& z, bool audit, nlohmann::json& summary,
+                    std::string* error) {
+  app::MeshArgs args;
+  args.prefix = "unused";
+  args.formats.clear();
+  args.options.ratio = 2.0;
+  args.options.audit = audit;
+  args.options.max_volume = z.max_volume;
+  args.options.size = z.size;
+  app::Summary s;
+  try {
+    const int code = app::mesh_plc(plc, args, s);
+    summary = s.to_json();
+    return code;
+  } catch (const std::exception& e) {
+    *error = std::string("exception: ") + e.what();
+    return -1;
+  }
 }
 
 }  // namespace pdr::refine::test

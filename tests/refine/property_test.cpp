@@ -45,28 +45,17 @@ namespace {
 // Runs `pdr mesh` in process (no files written, check on, audit on, B = 2); "" when the
 // mesh passes, else why not.
 std::string mesh_failure(const Plc& plc, const Sizing& z) {
-  app::MeshArgs args;
-  args.prefix = "unused";
-  args.formats.clear();
-  args.options.ratio = 2.0;
-  args.options.audit = true;
-  args.options.max_volume = z.max_volume;
-  args.options.size = z.size;
-  app::Summary summary;
-  int code = -1;
-  try {
-    code = app::mesh_plc(plc, args, summary);
-  } catch (const std::exception& e) {
-    return std::string("exception: ") + e.what();
-  }
-  const auto j = summary.to_json();
+  nlohmann::json j;
+  std::string error;
+  const int code = run_mesh(plc, z, true, j, &error);
+  if (code < 0) return error;
   std::string why;
   if (code != 0) why += "exit code " + std::to_string(code) + "; ";
   if (j.value("admissible", false) != true) why += "analysis says inadmissible; ";
   if (j.value("check", "") != "pass") why += "checker did not pass; ";
   if (!(j.value("ratio_max", 99.0) < 2.0)) why += "ratio_max >= 2; ";
   if (j.value("tets", 0) == 0) why += "no tets; ";
-  if (!why.empty()) why += "\n" + summary.to_text();
+  if (!why.empty()) why += "\n" + j.dump(1);
   return why;
 }
 
