@@ -5,8 +5,8 @@
 // [0,10]^3 with a suspended cubical void [4,6]^3, outer facets marker 1, void facets
 // marker 2, a hole point at (5,5,5)), built here in code, with ratio bound 2 and a volume
 // bound of 0.05, checks the result exactly against the domain and writes
-// out/default.{node,ele,face,vtu}. The parallel layer (§4) is not built yet: the job runs
-// the sequential mesher.
+// out/default.{node,ele,face,vtu}. Under mpirun the ranks refine it together
+// (app/parallel.hpp).
 #include <array>
 
 #include "app/commands.hpp"

@@ -20,6 +20,7 @@
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
 #include "app/order_check.hpp"
+#include "app/parallel.hpp"
 #include "app/pipeline.hpp"
 #include "app/summary.hpp"
 #include "check/check.hpp"
@@ -112,6 +113,10 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   c->add_flag("--json", a.json, "Print the summary as one JSON object");
   c->add_option("--seed", a.seed, "Seed of the initial insertion order");
   c->add_option("--max-vertices", a.options.max_vertices, "Vertex cap (0: derived)");
+  c->add_option("--initial-tets", a.initial_tets,
+                "Under mpirun: refine sequentially to about K tets before distributing")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   return c;
 }
 
@@ -147,8 +152,14 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
                                                 args.seed);
   summary.set("initial_tets", vm.inside_tets());
   timer.lap("initial");
-  const refine::RefineResult rr = refine::refine(vm, opt);
-  const double t_refine = timer.lap("refine");
+  double t_before = 0;  // parallel runs: the phases before rank 0's completion
+  std::optional<refine::RefineResult> refined =
+      world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.seed, summary,
+                                            timer, t_before)
+                       : refine::refine(vm, opt);
+  if (!refined) return kExitOk;  // not rank 0: rank 0 writes, checks and decides the code
+  const refine::RefineResult& rr = *refined;
+  const double t_refine = t_before + timer.lap("refine");
   summary.set("ratio_bound", opt.ratio);
   summary.set("h", std::isfinite(rr.stats.h) ? rr.stats.h : 0.0);
   summary.set("inserted", nlohmann::json{{"tet_circumcenters", rr.stats.tet_circumcenters},
@@ -248,7 +259,10 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   return code;
 }
 
-int run_mesh(const MeshArgs& args) {
+namespace {
+
+// mesh_plc on the file args.domain, the summary printed, the exit code returned.
+int mesh_and_report(const MeshArgs& args) {
   Summary summary;
   summary.set("command", "mesh");
   const Plc plc = io::read_domain(args.domain);
@@ -276,5 +290,9 @@ int run_mesh(const MeshArgs& args) {
   summary.print(args.json);
   return code;
 }
+
+}  // namespace
+
+int run_mesh(const MeshArgs& args) { return mesh_and_report(args); }
 
 }  // namespace pdr::app

@@ -7,12 +7,17 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <streambuf>
+#include <string>
+#include <utility>
 #include <system_error>
 
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
+#include "app/parallel.hpp"
 #include "io/error.hpp"
 #include "mesh/tet_store.hpp"
+#include "par/mpi_transport.hpp"
 
 namespace {
 
@@ -64,26 +69,79 @@ int dispatch(int argc, char** argv) {
   return run_default(def);
 }
 
+// The exit code of the exception that ended a command, and what to say about it.
+std::pair<int, std::string> exit_code_of(std::exception_ptr failure) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const pdr::InputError& e) {
+    return {kExitBadInput, e.what()};
+  } catch (const std::system_error& e) {
+    return {kExitBadInput, e.what()};
+  } catch (const pdr::CapacityError& e) {
+    // A resource limit like the vertex cap: exit 3 with the reason; nothing was written.
+    return {kExitNotGuaranteed, e.what()};
+  } catch (const std::bad_alloc&) {
+    return {kExitInternal, "out of memory"};
+  } catch (const std::exception& e) {
+    return {kExitInternal, std::string("internal error: ") + e.what()};
+  }
+}
+
+// The command's exit code (one process, no mpirun).
+int run(int argc, char** argv) {
+  try {
+    return dispatch(argc, argv);
+  } catch (...) {
+    const auto [code, what] = exit_code_of(std::current_exception());
+    std::cerr << "pdr: " << what << "\n";
+    return code;
+  }
+}
+
+// A stream buffer that drops everything: the standard streams of ranks other than 0.
+class NullBuffer final : public std::streambuf {
+ protected:
+  int_type overflow(int_type c) override { return traits_type::not_eof(c); }
+  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+};
+
+// Under mpirun (app/parallel.hpp): every rank runs the command; only rank 0 prints (the
+// others' standard streams are muted, so a bad input is reported once); every rank ends
+// with rank 0's exit code. A rank whose run ends in an exception other than bad input
+// (which every rank meets alike, before any exchange) ends the whole run at once, with
+// MPI_Abort and its exit code: the other ranks may be waiting for it.
+int run_ranks(int argc, char** argv) {
+  pdr::par::MpiSession session(&argc, &argv);
+  world() = {session.rank(), session.size()};
+  NullBuffer muted;
+  std::streambuf* const out = std::cout.rdbuf();
+  std::streambuf* const err = std::cerr.rdbuf();
+  if (session.rank() != 0) {
+    std::cout.rdbuf(&muted);
+    std::cerr.rdbuf(&muted);
+  }
+  int code = kExitOk;
+  try {
+    code = dispatch(argc, argv);
+  } catch (const pdr::InputError& e) {
+    std::cerr << "pdr: " << e.what() << "\n";
+    code = kExitBadInput;
+  } catch (...) {
+    const auto [failed, what] = exit_code_of(std::current_exception());
+    std::fprintf(stderr, "pdr: rank %d: %s\n", session.rank(), what.c_str());
+    if (session.size() > 1) pdr::par::MpiSession::abort(failed);
+    code = failed;
+  }
+  code = agree_exit_code(code);
+  std::cout.flush();
+  std::cout.rdbuf(out);
+  std::cerr.rdbuf(err);
+  return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return dispatch(argc, argv);
-  } catch (const pdr::InputError& e) {
-    std::cerr << "pdr: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::system_error& e) {
-    std::cerr << "pdr: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const pdr::CapacityError& e) {
-    // A resource limit like the vertex cap: exit 3 with the reason; nothing was written.
-    std::cerr << "pdr: " << e.what() << "\n";
-    return kExitNotGuaranteed;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "pdr: out of memory\n";
-    return kExitInternal;
-  } catch (const std::exception& e) {
-    std::cerr << "pdr: internal error: " << e.what() << "\n";
-    return kExitInternal;
-  }
+  if (pdr::par::launched_by_mpi()) return run_ranks(argc, argv);
+  return run(argc, argv);
 }

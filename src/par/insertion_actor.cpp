@@ -17,8 +17,24 @@ Bytes migration_message(std::uint64_t search, bool walk, const Migration& m) {
 
 }  // namespace
 
-InsertionActor::InsertionActor(Transport& t, Submesh sub, std::uint64_t seed)
-    : t_(t), sub_(std::move(sub)), td_(t), rng_(seed ^ (0x9E3779B97F4A7C15ull * (sub_.id() + 1))) {}
+InsertionActor::InsertionActor(Transport& t, Submesh sub, std::uint64_t seed, StepRules* rules)
+    : t_(t),
+      sub_(std::move(sub)),
+      td_(t),
+      rng_(seed ^ (0x9E3779B97F4A7C15ull * (sub_.id() + 1))),
+      rules_(rules) {}
+
+void InsertionActor::add_wanted_tets() {
+  const TetStore& st = sub_.store();
+  for (TetId t = 0; t < st.slots(); ++t)
+    if (st.is_alive(t) && !st.is_proxy(t)) want(t);
+}
+
+void InsertionActor::want(TetId t) {
+  if (rules_ != nullptr && !sub_.store().is_ghost(t) && sub_.inside(t) && !sub_.deferred(t) &&
+      rules_->wants(sub_, t))
+    ready_.push_back({Point{}, sub_.tet_gid(t), 0, 0});
+}
 
 void InsertionActor::send(int to, Bytes b) { t_.send(to, std::move(b)); }
 
@@ -41,6 +57,23 @@ bool InsertionActor::step() {
     const Waiting w = ready_.front();
     ready_.pop_front();
     worked_ = true;
+    if (!start(w)) ++stats_.gone;
+  }
+  if (worked_) td_.activity();
+  return td_.step(idle());
+}
+
+bool InsertionActor::start(Waiting w) {
+  if (w.tet != kNoGid) {  // a tet's step: from the tet itself, while it is here
+    const TetId t = sub_.find_tet(w.tet);
+    if (t == kNoTet) return false;
+    w.p = rules_->point(sub_, t);
+    active_ = true;
+    s_ = Search{next_search_++, w, w.tet, 0, false, false};
+    round();
+    return true;
+  }
+  {
     const TetId start = any_real_tet();
     if (start == kNoTet) {  // nothing here to start from: the next rank takes the point
       WireWriter m;
@@ -53,8 +86,7 @@ bool InsertionActor::step() {
       round();
     }
   }
-  if (worked_) td_.activity();
-  return td_.step(idle());
+  return true;
 }
 
 TetId InsertionActor::any_real_tet() {
@@ -83,9 +115,20 @@ void InsertionActor::round() {
     return;
   }
   if (rc.kind == RootCavity::Kind::Complete) {
-    sub_.insert(rc.cavity, 0);
+    if (rules_ != nullptr && !rules_->accept(sub_, rc.cavity)) {
+      ++stats_.deferred;
+      if (const TetId t = sub_.find_tet(s_.w.tet); t != kNoTet) sub_.mark_deferred(t);
+      finish();
+      return;
+    }
+    sub_.insert(rc.cavity, rules_ != nullptr ? 1 : 0);
     ++stats_.commits;
     finish();
+    if (rules_ != nullptr) {
+      committed_.push_back(rc.cavity.point);
+      const std::vector<TetId> made(sub_.created().begin(), sub_.created().end());
+      for (const TetId t : made) want(t);
+    }
     return;
   }
   if (rc.fetch.count(sub_.id()) != 0) {  // tets on their way here: look again later
@@ -153,7 +196,7 @@ void InsertionActor::receive(int, std::span<const std::byte> bytes) {
     }
     case Type::Point: {
       const Point p = r.get<Point>();
-      ready_.push_back({p, r.get<std::uint32_t>(), 0});
+      ready_.push_back({p, kNoGid, r.get<std::uint32_t>(), 0});
       break;
     }
   }
@@ -205,6 +248,7 @@ void InsertionActor::take_tets(WireReader& r) {
   m.vertices = r.get_vector<VertexRecord>();
   const std::vector<TetId> ids = sub_.give(m);
   if (walk && !ids.empty()) s_.hint = sub_.tet_gid(ids.front());
+  for (const TetId t : ids) want(t);
   reply_in(false);
 }
 

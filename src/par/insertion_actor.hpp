@@ -25,6 +25,16 @@
 // result is the Delaunay tetrahedralization of all points, which the symbolic
 // perturbation makes unique (tested against the sequential kernel).
 // A rank whose store has no tet left passes its points on (POINT) to the next rank.
+//
+// Refinement (ParRefinement, paper Fig. 7), with StepRules (par/step_rules.hpp): the queue
+// also holds tets, by global id. A tet's step inserts rules.point() (its circumcenter),
+// searched as above from the tet itself; a complete cavity is committed only when
+// rules.accept() says so (else the step is deferred), and its new inside tets that the
+// rules want are queued. Tets that arrive by migration are queued when the rules want
+// them, so every wanted tet is in the queue of the rank that holds it; a queued tet that
+// has left (migrated or deleted) is dropped when its turn comes. A tet whose step was
+// deferred is marked (the mark moves with it) and not queued again: without the mark, two
+// ranks whose deferred steps share closure tets pass them back and forth for ever.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +44,7 @@
 #include <vector>
 
 #include "par/cavity_search.hpp"
+#include "par/step_rules.hpp"
 #include "par/submesh.hpp"
 #include "par/termination.hpp"
 #include "par/wire.hpp"
@@ -44,24 +55,36 @@ namespace pdr::par {
 struct InsertionStats {
   std::uint64_t commits = 0, rounds = 0, setbacks = 0, duplicates = 0;
   std::uint64_t fetches_served = 0, refused = 0, tets_sent = 0, points_passed = 0;
+  std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
+                                         // tets that had left when their turn came
 };
 
 class InsertionActor {
  public:
-  // The rank's transport (rank r holds submesh r); `seed` seeds the back-off.
-  InsertionActor(Transport& t, Submesh sub, std::uint64_t seed);
+  // The rank's transport (rank r holds submesh r); `seed` seeds the back-off; `rules`
+  // (optional, outliving the actor): refinement.
+  InsertionActor(Transport& t, Submesh sub, std::uint64_t seed, StepRules* rules = nullptr);
 
-  void add_point(const Point& p) { ready_.push_back({p, 0, 0}); }
+  void add_point(const Point& p) { ready_.push_back({p, kNoGid, 0, 0}); }
+  // Refinement: queues every tet of the submesh the rules want.
+  void add_wanted_tets();
   // One loop iteration; true once the run has terminated everywhere.
   bool step();
 
   const Submesh& submesh() const { return sub_; }
   const InsertionStats& stats() const { return stats_; }
   bool idle() const { return !active_ && ready_.empty() && delayed_.empty(); }
+  // The last step() handled a message or did work of its own; a search of this rank waits
+  // for replies (the idle policy only yields then: par/idle.hpp).
+  bool worked() const { return worked_; }
+  bool waiting() const { return active_ && !again_; }
+  // Refinement: the points this rank committed, in order.
+  const std::vector<Point>& committed_points() const { return committed_; }
 
  private:
   struct Waiting {
     Point p{};
+    Gid tet = kNoGid;  // refinement: the tet whose step this is (p is its circumcenter)
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again
   };
@@ -83,6 +106,8 @@ class InsertionActor {
   void finish();
   TetId any_real_tet();
   void send(int to, Bytes b);
+  void want(TetId t);  // refinement: queue t when the rules want it
+  bool start(Waiting w);  // false: a tet that has left
 
   Transport& t_;
   Submesh sub_;
@@ -98,6 +123,8 @@ class InsertionActor {
   std::vector<Waiting> delayed_;
   TetId cursor_ = 0;
   InsertionStats stats_;
+  StepRules* rules_ = nullptr;
+  std::vector<Point> committed_;
 };
 
 }  // namespace pdr::par

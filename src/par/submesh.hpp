@@ -80,7 +80,7 @@ struct TetRecord {
   Gid gid = 0;
   std::uint32_t epoch = 0;          // moves so far, this one included
   std::array<Gid, 4> v{};           // positively oriented; a ghost has kGhostGid in slot 3
-  std::uint8_t inside = 0;          // the tet lies in Ω
+  std::uint8_t inside = 0;          // bit 0: the tet lies in Ω; bit 1: deferred (below)
   std::array<Side, 4> across{};     // per face; claim.holder kSameMigration: in this migration
 };
 
@@ -125,7 +125,11 @@ class Submesh {
     const auto it = tet_at_.find(g);
     return it == tet_at_.end() ? kNoTet : it->second;
   }
-  bool inside(TetId t) const { return t < inside_.size() && inside_[t] != 0; }
+  bool inside(TetId t) const { return t < inside_.size() && (inside_[t] & 1) != 0; }
+  // Refinement: the step of real tet t was deferred (par/refinement_rules.hpp); the mark
+  // travels with the tet, so no rank takes that step up again in the parallel phase.
+  bool deferred(TetId t) const { return t < inside_.size() && (inside_[t] & 2) != 0; }
+  void mark_deferred(TetId t) { inside_[t] |= 2; }
   // What a proxy knows of the tet across it (precondition: t is a live proxy).
   const Side& proxy_side(TetId t) const { return side_.at(t); }
   std::size_t real_tets() const { return store_.live() - side_.size(); }

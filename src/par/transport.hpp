@@ -41,6 +41,7 @@ class Transport {
   // Sends `message` to rank `to` (another rank). Precondition: 0 <= to < size(), to != rank().
   void send(int to, Bytes message) {
     ++sent_;
+    bytes_sent_ += message.size();
     do_send(to, std::move(message));
   }
   // Hands at most `max` arrived messages, oldest first per sender, to `deliver`; returns
@@ -59,12 +60,13 @@ class Transport {
 
   std::uint64_t sent() const { return sent_; }
   std::uint64_t received() const { return received_; }
+  std::uint64_t bytes_sent() const { return bytes_sent_; }
 
  private:
   virtual void do_send(int to, Bytes message) = 0;
   virtual std::size_t do_poll(const Deliver& deliver, std::size_t max) = 0;
 
-  std::uint64_t sent_ = 0, received_ = 0;
+  std::uint64_t sent_ = 0, received_ = 0, bytes_sent_ = 0;
 };
 
 }  // namespace pdr::par

@@ -1,0 +1,159 @@
+// `mpirun -np P pdr mesh`: see app/parallel.hpp.
+#include "app/parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "par/mpi_collect.hpp"
+#include "par/mpi_transport.hpp"
+#include "par/par_refinement.hpp"
+#include "par/partition.hpp"
+
+namespace pdr::app {
+namespace {
+
+// The volume of the inside tets, in double: it only sizes the coarse refinement.
+double inside_volume(const refine::VolumeMesh& m) {
+  const TetStore& s = m.dt.store();
+  double vol = 0;
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
+    const VertexId* v = s.vertices(t);
+    const Point &a = m.dt.point(v[0]), &b = m.dt.point(v[1]), &c = m.dt.point(v[2]),
+                &d = m.dt.point(v[3]);
+    double u[3], w[3], x[3];
+    for (int k = 0; k < 3; ++k) u[k] = b[k] - a[k], w[k] = c[k] - a[k], x[k] = d[k] - a[k];
+    vol += std::abs(u[0] * (w[1] * x[2] - w[2] * x[1]) - u[1] * (w[0] * x[2] - w[2] * x[0]) +
+                    u[2] * (w[0] * x[1] - w[1] * x[0])) / 6;
+  }
+  return vol;
+}
+
+// The coarse refinement's options: the user's, with the size bounds raised so that M_o has
+// about `tets` inside tets; never finer than the user asked (no size bound: none here).
+refine::RefineOptions coarse_options(const refine::RefineOptions& opt, double volume,
+                                     std::size_t tets) {
+  refine::RefineOptions c = opt;
+  c.progress = false;
+  const double v0 = volume / static_cast<double>(std::max<std::size_t>(tets, 1));
+  if (c.max_volume) c.max_volume = std::max(*c.max_volume, v0);
+  if (c.size) c.size = std::max(*c.size, std::cbrt(v0));
+  return c;
+}
+
+nlohmann::json figures_json(int rank, const par::RankFigures& f) {
+  const auto& s = f.steps;
+  return nlohmann::json{
+      {"rank", rank},
+      {"seconds", f.seconds},
+      {"busy_seconds", f.busy_seconds},
+      {"commits", s.commits},
+      {"deferred", {{"outside", f.deferred.outside},
+                    {"subsegment", f.deferred.subsegment},
+                    {"subfacet", f.deferred.subfacet},
+                    {"removed", f.deferred.removed}}},
+      {"setbacks", s.setbacks},
+      {"rounds", s.rounds},
+      {"fetches_served", s.fetches_served},
+      {"fetches_refused", s.refused},
+      {"tets_migrated", s.tets_sent},
+      {"queued_tets_gone", s.gone},
+      {"messages_sent", f.messages_sent},
+      {"messages_received", f.messages_received},
+      {"bytes_sent", f.bytes_sent},
+      {"empty_polls", f.empty_polls},
+      {"sleeps", f.sleeps},
+      {"start_tets", f.start_tets},
+      {"final_tets", f.final_tets}};
+}
+
+void print_table(const std::vector<par::RankFigures>& all) {
+  std::fprintf(stderr, "parallel phase: %-4s %8s %8s %9s %9s %8s %9s %9s %10s\n", "rank",
+               "seconds", "busy", "commits", "deferred", "setbacks", "migrated", "messages",
+               "final_tets");
+  for (std::size_t r = 0; r < all.size(); ++r) {
+    const par::RankFigures& f = all[r];
+    const auto& d = f.deferred;
+    std::fprintf(stderr, "parallel phase: %-4zu %8.3f %8.3f %9llu %9llu %8llu %9llu %9llu %10llu\n",
+                 r, f.seconds, f.busy_seconds, static_cast<unsigned long long>(f.steps.commits),
+                 static_cast<unsigned long long>(d.outside + d.subsegment + d.subfacet + d.removed),
+                 static_cast<unsigned long long>(f.steps.setbacks),
+                 static_cast<unsigned long long>(f.steps.tets_sent),
+                 static_cast<unsigned long long>(f.messages_sent),
+                 static_cast<unsigned long long>(f.final_tets));
+  }
+}
+
+}  // namespace
+
+World& world() {
+  static World w;
+  return w;
+}
+
+std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
+                                                       const refine::RefineOptions& opt,
+                                                       std::size_t initial_tets,
+                                                       std::uint64_t seed, Summary& summary,
+                                                       PhaseTimer& timer, double& seconds) {
+  const World w = world();
+  // M_o: the same on every rank.
+  const refine::RefineResult coarse =
+      refine::refine(vm, coarse_options(opt, inside_volume(vm), initial_tets));
+  vm.missing_subfacets.clear();  // restored (or reported again by the completion below)
+  vm.missing_subsegments.clear();
+  const std::size_t m0_tets = vm.inside_tets();
+  seconds = timer.lap("coarse");
+  // A coarse run that stopped at its cap, or left D out of T, is not a mesh to distribute:
+  // every rank then leaves the whole refinement to rank 0.
+  const bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
+  std::vector<Point> points;
+  std::vector<par::RankFigures> figures;
+  if (distribute) {
+    try {
+      const par::Partition part =
+          par::partition_tets(vm.dt.store(), vm.inside, static_cast<std::uint32_t>(w.size), seed);
+      par::RankResult mine;
+      {
+        par::MpiTransport t;
+        mine = par::refine_part(vm, part, t, {opt.ratio, opt.size, opt.max_volume}, seed);
+      }
+      seconds += timer.lap("parallel");
+      points = par::gather_points(mine.points);
+      figures = par::gather_figures(mine.figures);
+      seconds += timer.lap("gather");
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pdr: rank %d: internal error in the parallel phase: %s\n", w.rank,
+                   e.what());
+      par::MpiSession::abort(4);
+    }
+  }
+  if (w.rank != 0) return std::nullopt;
+  const std::size_t added = par::absorb(vm, points);
+  seconds += timer.lap("absorb");
+  nlohmann::json ranks = nlohmann::json::array();
+  double slowest = 0;
+  for (std::size_t r = 0; r < figures.size(); ++r) {
+    ranks.push_back(figures_json(static_cast<int>(r), figures[r]));
+    slowest = std::max(slowest, figures[r].seconds);
+  }
+  summary.set("parallel", nlohmann::json{{"schema_version", 1},
+                                         {"ranks", w.size},
+                                         {"distributed", distribute},
+                                         {"initial_tets", m0_tets},
+                                         {"points", points.size()},
+                                         {"points_absorbed", added},
+                                         {"slowest_rank_seconds", slowest},
+                                         {"per_rank", ranks}});
+  if (!figures.empty()) print_table(figures);
+  refine::RefineOptions rest = opt;
+  return refine::refine(vm, rest);
+}
+
+int agree_exit_code(int code) {
+  return world().size > 1 ? par::broadcast_from_root(code) : code;
+}
+
+}  // namespace pdr::app

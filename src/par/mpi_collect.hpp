@@ -1,0 +1,25 @@
+// The collective steps of `mpirun pdr mesh` around the parallel phase, on MPI_COMM_WORLD:
+// gathering at rank 0, and the run's end, which every rank must reach without spinning
+// (a rank waiting for rank 0's completion and output sleeps between tests of a
+// non-blocking collective: par/idle.hpp's reasoning, with ranks that may share cores).
+// Preconditions: MPI is initialised (par/mpi_transport.hpp MpiSession); every rank calls
+// each function in the same order.
+#pragma once
+
+#include <vector>
+
+#include "geom/point.hpp"
+#include "par/par_refinement.hpp"
+
+namespace pdr::par {
+
+// Every rank's points, concatenated in rank order, at rank 0 (empty elsewhere).
+std::vector<Point> gather_points(const std::vector<Point>& mine);
+
+// Every rank's figures, in rank order, at rank 0 (empty elsewhere).
+std::vector<RankFigures> gather_figures(const RankFigures& mine);
+
+// Rank 0's value on every rank; the other ranks wait for it asleep (at most 1 ms late).
+int broadcast_from_root(int value);
+
+}  // namespace pdr::par

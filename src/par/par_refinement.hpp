@@ -1,0 +1,54 @@
+// The parallel phase of ParRefinement (paper §4, Fig. 7) on one rank, and what the
+// sequential completion needs from it (docs/parallel.md).
+//
+// Every rank holds the same mesh M_o (built deterministically from the same input) and the
+// same METIS partition of it (par/partition.hpp); rank r keeps part r as its submesh
+// (par/submesh.hpp) and refines its bad tets with the InsertionActor's protocol and
+// RefinementRules (par/refinement_rules.hpp): distributed cavities pulled to the root,
+// closure locks, setbacks with seeded back-off, termination detection. Steps that would
+// change D (an encroached subsegment or subfacet) or leave Ω are deferred.
+//
+// After termination, rank 0 gathers the points every rank committed (par/mpi_collect.hpp)
+// and absorb() adds them to its M_o: the Delaunay tetrahedralization of a point set is
+// unique (symbolic perturbation), so M_o plus the points is exactly the union of the
+// submeshes, with the same inside flags (every point is off ∂Ω, D has not changed). The
+// sequential refinement (refine/seq_refinement.hpp) then completes the mesh from there.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "par/insertion_actor.hpp"
+#include "par/partition.hpp"
+#include "par/refinement_rules.hpp"
+#include "par/transport.hpp"
+
+namespace pdr::par {
+
+// One rank's figures of the parallel phase (fixed size: gathered as bytes).
+struct RankFigures {
+  double seconds = 0;          // from the start of the loop to termination
+  double busy_seconds = 0;     // in iterations that did work
+  InsertionStats steps;        // commits, setbacks, rounds, fetches, migrated tets, ...
+  DeferCounts deferred;        // steps left to the sequential completion, by reason
+  std::uint64_t messages_sent = 0, messages_received = 0, bytes_sent = 0;
+  std::uint64_t empty_polls = 0, sleeps = 0;
+  std::uint64_t start_tets = 0, final_tets = 0;  // real tets of the submesh
+};
+
+struct RankResult {
+  std::vector<Point> points;  // the points this rank committed
+  RankFigures figures;
+};
+
+// The parallel phase on this rank (transport t: rank r holds part r; t.size() == parts).
+RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
+                       const refine::TetBounds& bounds, std::uint64_t seed);
+
+// Adds `points` (off ∂Ω, not vertices of m yet) to T, flags their tets (refine/
+// volume_mesh.hpp commit_point), in Hilbert order. Returns how many were new; a point
+// already a vertex is skipped.
+std::size_t absorb(refine::VolumeMesh& m, std::span<const Point> points);
+
+}  // namespace pdr::par

@@ -1,0 +1,99 @@
+// Fig. 2's step on a submesh with D as distributed; see par/refinement_rules.hpp.
+#include "par/refinement_rules.hpp"
+
+#include <algorithm>
+
+#include "geom/construct.hpp"
+#include "geom/encroach.hpp"
+#include "mesh/tables.hpp"
+
+namespace pdr::par {
+
+bool RefinementRules::wants(const Submesh& s, TetId t) const {
+  const TetStore& st = s.store();
+  const auto pts = s.points();
+  const VertexId* v = st.vertices(t);
+  return refine::is_bad(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]], bounds_);
+}
+
+Point RefinementRules::point(const Submesh& s, TetId t) const {
+  const auto pts = s.points();
+  const VertexId* v = s.store().vertices(t);
+  return construct::circumcenter(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
+}
+
+refine::MaybeId RefinementRules::subsegment(const Submesh& s, VertexId a, VertexId b) const {
+  const VertexId ga = m0_vertex(s, a), gb = m0_vertex(s, b);
+  if (ga == kNoVertex || gb == kNoVertex) return {};
+  return m0_.subsegment(ga, gb);
+}
+
+refine::MaybeId RefinementRules::subfacet(const Submesh& s, VertexId a, VertexId b,
+                                          VertexId c) const {
+  const VertexId ga = m0_vertex(s, a), gb = m0_vertex(s, b), gc = m0_vertex(s, c);
+  if (ga == kNoVertex || gb == kNoVertex || gc == kNoVertex) return {};
+  return m0_.subfacet(ga, gb, gc);
+}
+
+// Whether p lies in the closed diametral ball of a subsegment edge of real tet t, or in the
+// closed equatorial ball of a subfacet face of it (counted by kind).
+bool RefinementRules::encroaches(const Submesh& s, TetId t, const Point& p) {
+  const TetStore& st = s.store();
+  if (st.is_ghost(t) || st.is_proxy(t)) return false;
+  const auto pts = s.points();
+  const VertexId* v = st.vertices(t);
+  for (const auto& e : tables::kEdgeVertex)
+    if (subsegment(s, v[e[0]], v[e[1]]) &&
+        in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative) {
+      ++deferred_.subsegment;
+      return true;
+    }
+  for (const auto& f : tables::kFaceVertex)
+    if (subfacet(s, v[f[0]], v[f[1]], v[f[2]]) &&
+        in_equatorial_ball(pts[v[f[0]]], pts[v[f[1]]], pts[v[f[2]]], p) != Sign::Negative) {
+      ++deferred_.subfacet;
+      return true;
+    }
+  return false;
+}
+
+bool RefinementRules::accept(const Submesh& s, const Cavity& c) {
+  const TetStore& st = s.store();
+  for (const TetId t : c.conflict)
+    if (st.is_ghost(t) || !s.inside(t)) {
+      ++deferred_.outside;
+      return false;
+    }
+  for (const TetId t : c.conflict)
+    if (encroaches(s, t, c.point)) return false;
+  for (const TetId t : c.ring)
+    if (encroaches(s, t, c.point)) return false;
+  // A subsegment edge of a conflict tet survives only as an edge of the boundary.
+  kept_.clear();
+  for (const TetId t : c.conflict) {
+    const VertexId* v = st.vertices(t);
+    for (const auto& e : tables::kEdgeVertex) {
+      if (!subsegment(s, v[e[0]], v[e[1]])) continue;
+      if (kept_.empty()) {
+        for (const HalfFace h : c.boundary) {
+          const VertexId* w = st.vertices(tet_of(h));
+          const auto& f = tables::kFaceVertex[face_of(h)];
+          for (int k = 0; k < 3; ++k) {
+            const VertexId a = w[f[k]], b = w[f[(k + 1) % 3]];
+            kept_.emplace_back(std::min(a, b), std::max(a, b));
+          }
+        }
+        std::sort(kept_.begin(), kept_.end());
+      }
+      const std::pair<VertexId, VertexId> key(std::min(v[e[0]], v[e[1]]),
+                                              std::max(v[e[0]], v[e[1]]));
+      if (!std::binary_search(kept_.begin(), kept_.end(), key)) {
+        ++deferred_.removed;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace pdr::par

@@ -1,0 +1,71 @@
+// RefinementRules: Fig. 2's step for a tet of a submesh, decided on the root's store
+// (par/step_rules.hpp), while the surface mesh D stays as it was when the mesh was
+// distributed (paper §4 items 1-2: every submesh starts with the subsegments and subfacets
+// of its tets; here every rank reads them from its copy of M_o, since D does not change
+// during the parallel phase).
+//
+// A tet is wanted when it is bad (refine/quality.hpp, exact: ratio >= B, or above the size
+// bounds). Its step inserts its circumcenter p. On the complete cavity of p, the step is
+// committed only when it is Fig. 2's "insert p" case:
+//   - every conflict tet lies inside Ω (so p does, and no subfacet separates two of them:
+//     the inside flag changes exactly across subfacets);
+//   - p lies in no closed diametral ball of a subsegment that is an edge of a closure tet,
+//     and in no closed equatorial ball of a subfacet that is a face of one (the same exact
+//     predicates as the sequential step, refine/closure.hpp);
+//   - no subsegment that is an edge of a conflict tet disappears (it stays an edge of the
+//     cavity's boundary).
+// Otherwise the step is deferred: the tet stays, and the sequential completion on rank 0
+// (docs/parallel.md) takes it up with Fig. 2's Refine(s)/Refine(f), the guards and the
+// conformity rules, as the sequential mesher would. Every committed step is thus a step
+// the sequential mesher may take, on a closure no other commit shares (Lemma 2), so the
+// sequential completion continues a valid run of Fig. 2 and Theorem 2's argument holds.
+// New vertices are never on ∂Ω, so D's lookups need only M_o's vertices (global id = M_o
+// vertex id, below 2^40; par/submesh.hpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "par/step_rules.hpp"
+#include "refine/quality.hpp"
+#include "refine/volume_mesh.hpp"
+
+namespace pdr::par {
+
+struct DeferCounts {
+  std::uint64_t outside = 0;     // a conflict tet outside Ω
+  std::uint64_t subsegment = 0;  // p encroaches a subsegment of the closure
+  std::uint64_t subfacet = 0;    // p encroaches a subfacet of the closure
+  std::uint64_t removed = 0;     // the cavity would remove a subsegment
+};
+
+class RefinementRules final : public StepRules {
+ public:
+  // m0: the mesh that was partitioned (its D and its vertex ids); it must outlive this.
+  RefinementRules(const refine::VolumeMesh& m0, const refine::TetBounds& bounds)
+      : m0_(m0), n0_(m0.dt.num_points()), bounds_(bounds) {}
+
+  bool wants(const Submesh& s, TetId t) const override;
+  Point point(const Submesh& s, TetId t) const override;
+  bool accept(const Submesh& s, const Cavity& c) override;
+
+  const DeferCounts& deferred() const { return deferred_; }
+
+ private:
+  // M_o's vertex id of local vertex v, or kNoVertex for a vertex made later (off ∂Ω).
+  VertexId m0_vertex(const Submesh& s, VertexId v) const {
+    const Gid g = s.gid(v);
+    return g < n0_ ? static_cast<VertexId>(g) : kNoVertex;
+  }
+  refine::MaybeId subsegment(const Submesh& s, VertexId a, VertexId b) const;
+  refine::MaybeId subfacet(const Submesh& s, VertexId a, VertexId b, VertexId c) const;
+  bool encroaches(const Submesh& s, TetId t, const Point& p);
+
+  const refine::VolumeMesh& m0_;
+  const Gid n0_;
+  const refine::TetBounds bounds_;
+  DeferCounts deferred_;
+  std::vector<std::pair<VertexId, VertexId>> kept_;  // accept(): the boundary's edges
+};
+
+}  // namespace pdr::par

@@ -1,0 +1,165 @@
+// ParRefinement's parallel phase (par/par_refinement.hpp) on the simulator: a refined
+// cube-in-cube cut into one submesh per rank, every rank refining its bad tets with
+// RefinementRules, every message delivered in a seeded random order. When termination is
+// detected:
+//   - no message is in flight, every store is valid, no relink notice waits;
+//   - the ranks together hold exactly M_o plus the committed points, as absorb() builds it
+//     (the Delaunay tetrahedralization is unique), with the same inside tets;
+//   - no work was left behind: every bad inside tet of that mesh is one whose step the
+//     rules defer (checked on the whole mesh with the same rules);
+//   - the sequential completion then ends in a mesh the exact checker passes: valid,
+//     Delaunay, conforming, ratio < 2.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "check/check.hpp"
+#include "delaunay/export.hpp"
+#include "par/insertion_actor.hpp"
+#include "par/par_meshes.hpp"
+#include "par/par_refinement.hpp"
+#include "par/partition.hpp"
+#include "par/point_tets.hpp"
+#include "par/sim_network.hpp"
+
+namespace pdr::par {
+namespace {
+
+constexpr double kTargetVolume = 0.05;
+
+struct SimRun {
+  std::vector<Point> points;
+  std::vector<test::PointTet> inside_tets;  // the ranks' inside tets
+  InsertionStats stats;
+};
+
+SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
+  SimRun out;
+  const refine::TetBounds bounds{2.0, std::nullopt, kTargetVolume};
+  const Partition part = partition_tets(m0.dt.store(), m0.inside, static_cast<std::uint32_t>(ranks), seed);
+  SimNetwork net(ranks, seed);
+  std::vector<std::unique_ptr<RefinementRules>> rules;
+  std::vector<std::unique_ptr<InsertionActor>> actors;
+  for (int r = 0; r < ranks; ++r) {
+    rules.push_back(std::make_unique<RefinementRules>(m0, bounds));
+    actors.push_back(std::make_unique<InsertionActor>(
+        net.endpoint(r),
+        Submesh::extract(static_cast<ActorId>(r), m0.dt.store(), m0.dt.points(), m0.inside, part),
+        seed, rules.back().get()));
+    actors.back()->add_wanted_tets();
+  }
+  std::vector<bool> done(static_cast<std::size_t>(ranks), false);
+  std::uniform_int_distribution<int> pick(0, ranks - 1);
+  std::bernoulli_distribution deliver(0.5);
+  std::uint64_t steps = 0;
+  while (!std::all_of(done.begin(), done.end(), [](bool d) { return d; })) {
+    if (++steps > 50'000'000u) {
+      ADD_FAILURE() << "seed " << seed << ": no termination";
+      return out;
+    }
+    if (deliver(net.rng()) && net.deliver_one()) continue;
+    const int r = pick(net.rng());
+    if (actors[static_cast<std::size_t>(r)]->step() && !done[static_cast<std::size_t>(r)]) {
+      if (std::none_of(done.begin(), done.end(), [](bool d) { return d; })) {
+        EXPECT_EQ(net.in_flight(), 0u) << "seed " << seed << ": concluded with messages in flight";
+        for (const auto& a : actors) EXPECT_TRUE(a->idle()) << "seed " << seed;
+      }
+      done[static_cast<std::size_t>(r)] = true;
+    }
+  }
+  for (const auto& a : actors) {
+    const Submesh& s = a->submesh();
+    const auto problems = s.check();
+    EXPECT_TRUE(problems.empty()) << "seed " << seed << ": " << problems.front();
+    EXPECT_EQ(s.waiting_relinks(), 0u);
+    out.points.insert(out.points.end(), a->committed_points().begin(), a->committed_points().end());
+    const TetStore& st = s.store();
+    std::vector<test::PointTet> tets;
+    for (TetId t = 0; t < st.slots(); ++t)
+      if (st.is_alive(t) && !st.is_proxy(t) && !st.is_ghost(t) && s.inside(t)) {
+        const VertexId* v = st.vertices(t);
+        std::array<Point, 4> p{s.points()[v[0]], s.points()[v[1]], s.points()[v[2]], s.points()[v[3]]};
+        std::sort(p.begin(), p.end());
+        test::PointTet q;
+        for (std::size_t i = 0; i < 4; ++i)
+          for (std::size_t k = 0; k < 3; ++k) q[3 * i + k] = p[i][k];
+        out.inside_tets.push_back(q);
+      }
+    out.stats.commits += a->stats().commits;
+    out.stats.deferred += a->stats().deferred;
+    out.stats.setbacks += a->stats().setbacks;
+    out.stats.tets_sent += a->stats().tets_sent;
+  }
+  std::printf("seed %llu, %d ranks: %llu commits, %llu deferred, %llu setbacks, %llu tets "
+              "migrated, %llu sim steps\n",
+              static_cast<unsigned long long>(seed), ranks,
+              static_cast<unsigned long long>(out.stats.commits),
+              static_cast<unsigned long long>(out.stats.deferred),
+              static_cast<unsigned long long>(out.stats.setbacks),
+              static_cast<unsigned long long>(out.stats.tets_sent),
+              static_cast<unsigned long long>(steps));
+  return out;
+}
+
+TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
+  const Plc plc = io::read_domain(std::string(PDR_DATA_DIR) + "/cube-in-cube.poly");
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const int ranks = 2 + static_cast<int>(seed % 3);
+    refine::VolumeMesh m = test::cube_in_cube();
+    const SimRun run = run_sim(m, ranks, seed);
+    if (HasFailure()) return;
+    EXPECT_GT(run.stats.commits, 100u);
+    EXPECT_EQ(absorb(m, run.points), run.points.size());
+    // The union of the submeshes is M_o plus the points.
+    std::vector<test::PointTet> want;
+    const TetStore& s = m.dt.store();
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t) && !s.is_ghost(t) && m.is_inside(t)) {
+        const VertexId* v = s.vertices(t);
+        std::array<Point, 4> p{m.dt.point(v[0]), m.dt.point(v[1]), m.dt.point(v[2]), m.dt.point(v[3])};
+        std::sort(p.begin(), p.end());
+        test::PointTet q;
+        for (std::size_t i = 0; i < 4; ++i)
+          for (std::size_t k = 0; k < 3; ++k) q[3 * i + k] = p[i][k];
+        want.push_back(q);
+      }
+    EXPECT_TRUE(test::sorted(run.inside_tets) == test::sorted(want))
+        << "seed " << seed << ": the submeshes are not M_o plus the committed points";
+    // Nothing left that the rules would commit: every bad inside tet is deferred.
+    RefinementRules whole(m, {2.0, std::nullopt, kTargetVolume});
+    const Submesh one = Submesh::extract(0, s, m.dt.points(), m.inside,
+                                         partition_tets(s, m.inside, 1, seed));
+    Cavity c;
+    CavityBuilder builder;
+    std::size_t bad = 0;
+    for (TetId t = 0; t < one.store().slots(); ++t) {
+      const TetStore& os = one.store();
+      if (!os.is_alive(t) || os.is_ghost(t) || os.is_proxy(t) || !one.inside(t)) continue;
+      if (!whole.wants(one, t)) continue;
+      ++bad;
+      const Point p = whole.point(one, t);
+      WalkRng rng;
+      const Location loc = locate(os, one.points(), p, t, rng);
+      if (loc.kind == Location::Kind::OnVertex) continue;
+      builder.build(os, one.points(), p, loc.tet, c);
+      EXPECT_FALSE(whole.accept(one, c)) << "seed " << seed << ": a bad tet was left undeferred";
+    }
+    std::printf("  %zu bad tets left to the completion\n", bad);
+    // The sequential completion.
+    refine::RefineOptions o;
+    o.max_volume = kTargetVolume;
+    o.d = 2;  // cube-in-cube's d (the derived cap only)
+    const refine::RefineResult rr = refine::refine(m, o);
+    EXPECT_TRUE(rr.leftovers.empty());
+    const MeshData mesh = to_mesh_data(m.dt, m.inside);
+    check::Options co;
+    co.ratio_bound = 2.0;
+    const check::Report report = check::check_mesh(check::view_of(mesh), plc, co);
+    for (const auto& ch : report.checks)
+      EXPECT_NE(ch.status, check::Status::Fail) << "seed " << seed << ": " << ch.id;
+  }
+}
+
+}  // namespace
+}  // namespace pdr::par
