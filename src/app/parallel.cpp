@@ -31,15 +31,19 @@ double inside_volume(const refine::VolumeMesh& m) {
   return vol;
 }
 
-// The coarse refinement's options: the user's, with the size bounds raised so that M_o has
-// about `tets` inside tets; never finer than the user asked (no size bound: none here).
+// The coarse refinement's options: the user's for tets at the boundary (so D is refined
+// about as far as the final mesh needs, and the parallel phase rarely meets it), and for
+// interior tets the size bounds raised so that the interior has about `tets` tets; never
+// finer than the user asked (no size bound: none here).
 refine::RefineOptions coarse_options(const refine::RefineOptions& opt, double volume,
                                      std::size_t tets) {
   refine::RefineOptions c = opt;
   c.progress = false;
   const double v0 = volume / static_cast<double>(std::max<std::size_t>(tets, 1));
-  if (c.max_volume) c.max_volume = std::max(*c.max_volume, v0);
-  if (c.size) c.size = std::max(*c.size, std::cbrt(v0));
+  refine::TetBounds in{opt.ratio, opt.size, opt.max_volume};
+  if (in.max_volume) in.max_volume = std::max(*in.max_volume, v0);
+  if (in.size) in.size = std::max(*in.size, std::cbrt(v0));
+  c.interior = in;
   return c;
 }
 

@@ -205,7 +205,12 @@ class Refiner {
 
   bool bad(TetId t) const {
     const VertexId* v = m_.dt.store().vertices(t);
-    return is_bad(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), {o_.ratio, o_.size, o_.max_volume}) ||
+    TetBounds b{o_.ratio, o_.size, o_.max_volume};
+    if (o_.interior && std::all_of(v, v + 4, [&](VertexId u) {
+          return m_.vertex_class(u) == VertexClass::Interior;
+        }))
+      b = *o_.interior;
+    return is_bad(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), b) ||
            subfacet_to_refine(m_, t).has_value();  // issue #3: refine/flat.hpp
   }
   void consider(TetId t) {

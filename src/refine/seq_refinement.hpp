@@ -57,6 +57,7 @@
 #include <string>
 #include <vector>
 
+#include "refine/quality.hpp"
 #include "refine/volume_mesh.hpp"
 
 namespace pdr::refine {
@@ -73,6 +74,10 @@ struct RefineOptions {
                                       // (audit_note) instead of stopping: Lemma 1 is
                                       // not expected to hold outside the theory; and
                                       // the guards below are on
+  // The bounds of tets with no vertex on ∂Ω, when they differ (the parallel run's coarse
+  // mesh M_o: the boundary layer refined to the final bounds, the interior coarser, so the
+  // parallel phase rarely meets D: app/parallel.hpp).
+  std::optional<TetBounds> interior;
   std::vector<std::uint32_t> acute_vertices;  // inadmissible: acute_vertices(report)
                                               // (refine/split.hpp); empty: every input
                                               // vertex
