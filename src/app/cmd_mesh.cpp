@@ -114,8 +114,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   c->add_option("--seed", a.seed, "Seed of the initial insertion order");
   c->add_option("--max-vertices", a.options.max_vertices, "Vertex cap (0: derived)");
   c->add_option("--initial-tets", a.initial_tets,
-                "Under mpirun: refine sequentially to about K tets before distributing")
-      ->check(CLI::PositiveNumber)
+                "Under mpirun: refine the interior sequentially to about K tets before "
+                "distributing (0: automatic)")
       ->capture_default_str();
   return c;
 }

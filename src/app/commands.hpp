@@ -48,7 +48,7 @@ struct MeshArgs {
   bool json = false;
   std::uint64_t seed = 0x5EED;
   unsigned threads = 2;
-  std::size_t initial_tets = 20000;    // mpirun: M_o's size before it is distributed
+  std::size_t initial_tets = 0;        // mpirun: M_o's interior size (0: automatic)
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
 int run_mesh(const MeshArgs& args);

@@ -33,16 +33,20 @@ double inside_volume(const refine::VolumeMesh& m) {
 
 // The coarse refinement's options: the user's for tets at the boundary (so D is refined
 // about as far as the final mesh needs, and the parallel phase rarely meets it), and for
-// interior tets the size bounds raised so that the interior has about `tets` tets; never
-// finer than the user asked (no size bound: none here).
+// interior tets the size bounds raised: to a volume of about volume / `tets` (0: sixteen
+// times the final volume bound, or 2.5 times the final radius bound, with at most about
+// 100K interior tets, the size the paper started from); never finer than the user asked
+// (no size bound: none here).
 refine::RefineOptions coarse_options(const refine::RefineOptions& opt, double volume,
                                      std::size_t tets) {
+  constexpr double kAutoVolume = 16, kAutoRadius = 2.5, kAutoMaxTets = 100000;
   refine::RefineOptions c = opt;
   c.progress = false;
-  const double v0 = volume / static_cast<double>(std::max<std::size_t>(tets, 1));
+  const double v0 = volume / (tets > 0 ? static_cast<double>(tets) : kAutoMaxTets);
   refine::TetBounds in{opt.ratio, opt.size, opt.max_volume};
-  if (in.max_volume) in.max_volume = std::max(*in.max_volume, v0);
-  if (in.size) in.size = std::max(*in.size, std::cbrt(v0));
+  if (in.max_volume)
+    in.max_volume = std::max(*in.max_volume * (tets > 0 ? 1 : kAutoVolume), v0);
+  if (in.size) in.size = std::max(*in.size * (tets > 0 ? 1 : kAutoRadius), std::cbrt(v0));
   c.interior = in;
   return c;
 }
