@@ -47,8 +47,10 @@ void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t insid
     inside_.resize(store_.slots(), 0);
     tet_gid_.resize(store_.slots(), kNoGid);
     epoch_.resize(store_.slots(), 0);
+    exposed_.resize(store_.slots(), 0);
   }
   inside_[t] = inside;
+  exposed_[t] = 0;
   tet_gid_[t] = g;
   epoch_[t] = epoch;
   if (g != kNoGid) tet_at_[g] = t;
@@ -59,6 +61,7 @@ TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
   const TetId p = store_.create(store_.vertex(t, fv[0]), store_.vertex(t, fv[1]),
                                 store_.vertex(t, fv[2]), kRemoteVertex);
   record_tet(p, kNoGid, 0, 0);
+  exposed_[t] = 1;  // the submesh across now names t
   store_.link(half_face(t, f), half_face(p, 3));
   side_[p] = side;
   proxy_at_[key_of(p, 3)] = p;
@@ -169,6 +172,7 @@ std::vector<TetId> Submesh::give(const Migration& m) {
     for (int i = 0; i < 4; ++i) v[i] = local_vertex(r.v[static_cast<std::size_t>(i)], nullptr);
     const TetId t = store_.create(v[0], v[1], v[2], v[3]);
     record_tet(t, r.gid, r.epoch, r.inside);
+    exposed_[t] = 1;  // its old holder, and proxies elsewhere, may name it
     moved_.erase(r.gid);
     ids.push_back(t);
   }
@@ -219,7 +223,7 @@ VertexId Submesh::insert(const Cavity& c, std::uint8_t inside) {
   const VertexId v = local_vertex(fresh_gid(), &c.point);
   for (const TetId t : c.conflict) {
     tet_at_.erase(tet_gid_[t]);
-    moved_[tet_gid_[t]] = Claim{kDeleted, ~std::uint32_t{0}};
+    if (exposed_[t] != 0) moved_[tet_gid_[t]] = Claim{kDeleted, ~std::uint32_t{0}};
   }
   committer_.commit(store_, c, v, points_.size());
   for (const TetId t : committer_.created()) record_tet(t, fresh_gid(), 0, inside);

@@ -146,8 +146,9 @@ class Submesh {
   // Bowyer-Watson at this submesh: commits cavity c, built on this store as it is now and
   // complete (conflict tets and ring all real tets here: par/cavity_search.hpp), with
   // c.point as a new vertex. The vertex and the new tets get fresh global ids (this
-  // submesh's id and a serial); the new tets get `inside`. The deleted tets are recorded
-  // (moved() says kDeleted), so a late request or notice about one is answered. Returns
+  // submesh's id and a serial); the new tets get `inside`. The deleted tets that another
+  // submesh may name are recorded (moved() says kDeleted), so a late request or notice
+  // about one is answered. Returns
   // the new vertex; `created()` lists the new tets.
   VertexId insert(const Cavity& c, std::uint8_t inside);
   std::span<const TetId> created() const { return committer_.created(); }
@@ -186,7 +187,12 @@ class Submesh {
   std::unordered_map<Gid, TetId> tet_at_;  // real tets by global id
   std::unordered_map<TetId, Side> side_;   // per live proxy
   std::unordered_map<FaceKey, TetId, FaceKeyHash> proxy_at_;
-  std::unordered_map<Gid, Claim> moved_;   // tets given away: the latest hand-over
+  std::unordered_map<Gid, Claim> moved_;   // tets given away: the latest hand-over;
+                                           // deleted tets another submesh may name
+  // Per slot: another submesh may name this tet (it was glued to a proxy, or arrived by
+  // migration). Only such a tet's deletion is recorded: no message can name the others,
+  // which are most tets a commit deletes.
+  std::vector<std::uint8_t> exposed_;
   std::unordered_map<Gid, std::vector<Relink>> waiting_;  // notices about tets on their way
 };
 
