@@ -53,7 +53,32 @@ void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t insid
   exposed_[t] = 0;
   tet_gid_[t] = g;
   epoch_[t] = epoch;
-  if (g != kNoGid) tet_at_[g] = t;
+  if (g != kNoGid) index_tet(g, t);
+}
+
+void Submesh::index_tet(Gid g, TetId t) {
+  if (!made_here(g)) {
+    tet_at_[g] = t;
+    return;
+  }
+  const std::size_t serial = static_cast<std::size_t>(g & ((Gid{1} << 40) - 1));
+  if (slot_of_serial_.size() <= serial) slot_of_serial_.resize(serial + serial / 2 + 64, kNoTet);
+  slot_of_serial_[serial] = t;
+}
+
+void Submesh::unindex_tet(Gid g) {
+  if (!made_here(g)) tet_at_.erase(g);
+}
+
+TetId Submesh::find_tet(Gid g) const {
+  TetId t = kNoTet;
+  if (made_here(g)) {
+    const std::size_t serial = static_cast<std::size_t>(g & ((Gid{1} << 40) - 1));
+    if (serial < slot_of_serial_.size()) t = slot_of_serial_[serial];
+  } else if (const auto it = tet_at_.find(g); it != tet_at_.end()) {
+    t = it->second;
+  }
+  return t != kNoTet && t < tet_gid_.size() && tet_gid_[t] == g && store_.is_alive(t) ? t : kNoTet;
 }
 
 TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
@@ -155,7 +180,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
     add_proxy(keep_faces[i].first, keep_faces[i].second, keep_sides[i]);
   for (const TetId u : drop) drop_proxy(u);
   for (const TetId t : tets) {
-    tet_at_.erase(tet_gid_[t]);
+    unindex_tet(tet_gid_[t]);
     record_tet(t, kNoGid, 0, 0);
     store_.destroy(t);
   }
@@ -222,7 +247,7 @@ std::vector<TetId> Submesh::give(const Migration& m) {
 VertexId Submesh::insert(const Cavity& c, std::uint8_t inside) {
   const VertexId v = local_vertex(fresh_gid(), &c.point);
   for (const TetId t : c.conflict) {
-    tet_at_.erase(tet_gid_[t]);
+    unindex_tet(tet_gid_[t]);
     if (exposed_[t] != 0) moved_[tet_gid_[t]] = Claim{kDeleted, ~std::uint32_t{0}};
   }
   committer_.commit(store_, c, v, points_.size());
@@ -231,7 +256,7 @@ VertexId Submesh::insert(const Cavity& c, std::uint8_t inside) {
 }
 
 bool Submesh::relink(Relink& r) {
-  if (tet_at_.count(r.about) != 0) {
+  if (find_tet(r.about) != kNoTet) {
     // A proxy on that face, unless the moved tet is here too (then the face is inside),
     // and only one that still names the moved tet: after a commit, a new tet may have
     // the same face.
@@ -264,12 +289,12 @@ std::size_t Submesh::waiting_relinks() const {
 
 std::vector<std::string> Submesh::check() const {
   std::vector<std::string> out = store_.check_topology();
-  std::size_t proxies = 0;
+  std::size_t proxies = 0, foreign = 0;
   for (TetId t = 0; t < store_.slots(); ++t) {
     if (!store_.is_alive(t)) continue;
     if (!store_.is_proxy(t)) {
-      const auto it = tet_at_.find(tet_gid_[t]);
-      if (it == tet_at_.end() || it->second != t)
+      if (!made_here(tet_gid_[t])) ++foreign;
+      if (find_tet(tet_gid_[t]) != t)
         out.push_back("submesh.tet-index: tet " + std::to_string(t) + " of submesh " +
                       std::to_string(id_) + " is not indexed by its global id");
       continue;
@@ -281,7 +306,7 @@ std::vector<std::string> Submesh::check() const {
                     std::to_string(id_) + " is not indexed by its face");
   }
   if (proxies != side_.size() || proxies != proxy_at_.size() ||
-      store_.live() - proxies != tet_at_.size())
+      foreign != tet_at_.size())
     out.push_back("submesh.index: " + std::to_string(proxies) + " proxies, " +
                   std::to_string(side_.size()) + " sides, " +
                   std::to_string(proxy_at_.size()) + " indexed faces, " +

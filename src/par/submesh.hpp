@@ -121,10 +121,7 @@ class Submesh {
   Gid gid(VertexId v) const { return v == kGhostVertex ? kGhostGid : gids_[v]; }
   Gid tet_gid(TetId t) const { return tet_gid_[t]; }
   // The real tet with global id g, or kNoTet when it is not here.
-  TetId find_tet(Gid g) const {
-    const auto it = tet_at_.find(g);
-    return it == tet_at_.end() ? kNoTet : it->second;
-  }
+  TetId find_tet(Gid g) const;
   bool inside(TetId t) const { return t < inside_.size() && (inside_[t] & 1) != 0; }
   // Refinement: the step of real tet t was deferred (par/refinement_rules.hpp); the mark
   // travels with the tet, so no rank takes that step up again in the parallel phase.
@@ -184,7 +181,14 @@ class Submesh {
   std::vector<std::uint8_t> inside_;      // per slot
   std::vector<Gid> tet_gid_;              // per slot
   std::vector<std::uint32_t> epoch_;      // per slot
-  std::unordered_map<Gid, TetId> tet_at_;  // real tets by global id
+  // Real tets by global id: those made here by slot_of_serial_[serial], checked against
+  // tet_gid_ (a slot freed or reused no longer matches, so nothing is erased: the hot path
+  // of a commit touches no hash map); the others (from M_o or another submesh) in tet_at_.
+  std::vector<TetId> slot_of_serial_;
+  std::unordered_map<Gid, TetId> tet_at_;
+  bool made_here(Gid g) const { return g >> 40 == Gid{id_} + 1; }
+  void index_tet(Gid g, TetId t);
+  void unindex_tet(Gid g);
   std::unordered_map<TetId, Side> side_;   // per live proxy
   std::unordered_map<FaceKey, TetId, FaceKeyHash> proxy_at_;
   std::unordered_map<Gid, Claim> moved_;   // tets given away: the latest hand-over;
