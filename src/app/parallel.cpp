@@ -68,6 +68,7 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
       {"fetches_refused", s.refused},
       {"tets_migrated", s.tets_sent},
       {"queued_tets_gone", s.gone},
+      {"local_while_waiting", s.local_while_waiting},
       {"messages_sent", f.messages_sent},
       {"messages_received", f.messages_received},
       {"bytes_sent", f.bytes_sent},

@@ -2,6 +2,7 @@
 #include "par/insertion_actor.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace pdr::par {
 namespace {
@@ -58,9 +59,51 @@ bool InsertionActor::step() {
     ready_.pop_front();
     worked_ = true;
     if (!start(w)) ++stats_.gone;
+  } else if (active_ && !again_ && !ready_.empty()) {  // waiting for replies: local steps
+    const Waiting w = ready_.front();
+    ready_.pop_front();
+    worked_ = true;
+    local_step(w);
   }
   if (worked_) td_.activity();
   return td_.step(idle());
+}
+
+void InsertionActor::local_step(const Waiting& w) {
+  const TetId t = w.tet == kNoGid ? kNoTet : sub_.find_tet(w.tet);
+  if (w.tet != kNoGid && t == kNoTet) {
+    ++stats_.gone;
+    return;
+  }
+  if (t == kNoTet || locked_.count(t) != 0) {  // a given point, or the search's own tet
+    parked_.push_back(w);
+    return;
+  }
+  const RootCavity rc = search_.root_cavity(sub_, rules_->point(sub_, t), t);
+  const auto locked = [&](TetId u) { return locked_.count(u) != 0; };
+  if (rc.kind != RootCavity::Kind::Complete ||
+      std::any_of(rc.cavity.conflict.begin(), rc.cavity.conflict.end(), locked) ||
+      std::any_of(rc.cavity.ring.begin(), rc.cavity.ring.end(), locked)) {
+    parked_.push_back(w);
+    return;
+  }
+  ++stats_.local_while_waiting;
+  complete(rc.cavity, w.tet);
+}
+
+void InsertionActor::complete(const Cavity& c, Gid tet) {
+  if (rules_ != nullptr && !rules_->accept(sub_, c)) {
+    ++stats_.deferred;
+    if (const TetId t = sub_.find_tet(tet); t != kNoTet) sub_.mark_deferred(t);
+    return;
+  }
+  sub_.insert(c, rules_ != nullptr ? 1 : 0);
+  ++stats_.commits;
+  if (rules_ != nullptr) {
+    committed_.push_back(c.point);
+    made_.assign(sub_.created().begin(), sub_.created().end());
+    for (const TetId t : made_) want(t);
+  }
 }
 
 bool InsertionActor::start(Waiting w) {
@@ -115,20 +158,8 @@ void InsertionActor::round() {
     return;
   }
   if (rc.kind == RootCavity::Kind::Complete) {
-    if (rules_ != nullptr && !rules_->accept(sub_, rc.cavity)) {
-      ++stats_.deferred;
-      if (const TetId t = sub_.find_tet(s_.w.tet); t != kNoTet) sub_.mark_deferred(t);
-      finish();
-      return;
-    }
-    sub_.insert(rc.cavity, rules_ != nullptr ? 1 : 0);
-    ++stats_.commits;
     finish();
-    if (rules_ != nullptr) {
-      committed_.push_back(rc.cavity.point);
-      const std::vector<TetId> made(sub_.created().begin(), sub_.created().end());
-      for (const TetId t : made) want(t);
-    }
+    complete(rc.cavity, s_.w.tet);
     return;
   }
   if (rc.fetch.count(sub_.id()) != 0) {  // tets on their way here: look again later
@@ -158,6 +189,8 @@ void InsertionActor::finish() {
   active_ = false;
   again_ = false;
   locked_.clear();
+  ready_.insert(ready_.begin(), parked_.begin(), parked_.end());
+  parked_.clear();
 }
 
 void InsertionActor::setback() {
@@ -249,6 +282,7 @@ void InsertionActor::take_tets(WireReader& r) {
   const std::vector<TetId> ids = sub_.give(m);
   if (walk && !ids.empty()) s_.hint = sub_.tet_gid(ids.front());
   for (const TetId t : ids) want(t);
+  locked_.insert(ids.begin(), ids.end());  // the search's, until its next round
   reply_in(false);
 }
 

@@ -31,7 +31,13 @@
 // searched as above from the tet itself; a complete cavity is committed only when
 // rules.accept() says so (else the step is deferred), and its new inside tets that the
 // rules want are queued. Tets that arrive by migration are queued when the rules want
-// them, so every wanted tet is in the queue of the rank that holds it; a queued tet that
+// them, so every wanted tet is in the queue of the rank that holds it. While its search
+// waits for replies, a rank takes further steps whose cavity and ring are all here and
+// unlocked (the search's part of its closure and the tets that arrived for it are locked):
+// they commit at once, in the same single-threaded loop, so no two commits share a
+// closure tet still; the waiting search reruns its round from scratch when the replies
+// are in. A step that needs other ranks waits (parked) until the search ends. A queued
+// tet that
 // has left (migrated or deleted) is dropped when its turn comes. A tet whose step was
 // deferred is marked (the mark moves with it) and not queued again: without the mark, two
 // ranks whose deferred steps share closure tets pass them back and forth for ever.
@@ -57,6 +63,7 @@ struct InsertionStats {
   std::uint64_t fetches_served = 0, refused = 0, tets_sent = 0, points_passed = 0;
   std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
                                          // tets that had left when their turn came
+  std::uint64_t local_while_waiting = 0;  // steps committed while a search waited
 };
 
 class InsertionActor {
@@ -73,7 +80,7 @@ class InsertionActor {
 
   const Submesh& submesh() const { return sub_; }
   const InsertionStats& stats() const { return stats_; }
-  bool idle() const { return !active_ && ready_.empty() && delayed_.empty(); }
+  bool idle() const { return !active_ && ready_.empty() && delayed_.empty() && parked_.empty(); }
   // The last step() handled a message or did work of its own; a search of this rank waits
   // for replies (the idle policy only yields then: par/idle.hpp).
   bool worked() const { return worked_; }
@@ -108,6 +115,13 @@ class InsertionActor {
   void send(int to, Bytes b);
   void want(TetId t);  // refinement: queue t when the rules want it
   bool start(Waiting w);  // false: a tet that has left
+  // Refinement, while the search waits for replies: the step of w's tet when its cavity
+  // is complete here and touches no locked tet (latency hiding); otherwise w is parked
+  // until the search ends.
+  void local_step(const Waiting& w);
+  // A complete cavity at this rank: the rules accept it (commit, queue the new tets they
+  // want) or defer it (mark the tet `tet`).
+  void complete(const Cavity& c, Gid tet);
 
   Transport& t_;
   Submesh sub_;
@@ -121,6 +135,8 @@ class InsertionActor {
   std::unordered_set<TetId> locked_;
   std::deque<Waiting> ready_;
   std::vector<Waiting> delayed_;
+  std::vector<Waiting> parked_;  // local_step(): until the search ends
+  std::vector<TetId> made_;
   TetId cursor_ = 0;
   InsertionStats stats_;
   StepRules* rules_ = nullptr;
