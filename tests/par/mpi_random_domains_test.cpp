@@ -1,0 +1,77 @@
+// `mpirun -np 3 pdr mesh` on random admissible domains it never saw (voxel solids,
+// hexagonal prisms: tests/support/admissible_fixtures.hpp) with a random volume bound: every
+// run exits 0, its mesh passes the exact checker (validity, Delaunay, conformity, ratio
+// < 2) and the order-independence check, and all three ranks took part. A failing domain
+// is written to mpi-counterexample.poly with its options. Cases: PDR_MPI_CASES (default 8).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "refine/property_support.hpp"
+#include "support/admissible_fixtures.hpp"
+
+namespace pdr::par {
+namespace {
+
+// Runs `command`, returns its exit status and stdout.
+int run(const std::string& command, std::string& out) {
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  if (!pipe) return -1;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
+  const int status = pclose(pipe.release());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::uint64_t g_points = 0;  // points committed by the parallel phases, over all cases
+
+// Why the parallel run on plc fails ("" when it passes).
+std::string failure(const Plc& plc, const refine::test::Sizing& z) {
+  const std::string path = "mpi-case.poly";
+  std::ofstream(path) << pdr::test::poly_text(plc, "mpi random domain\noptions:" + z.options());
+  std::string out;
+  const int code = run(std::string(PDR_MPIEXEC) + " -n 3 --oversubscribe " PDR_BINARY " mesh " +
+                           path + " -o mpi-case-out --formats node --initial-tets 300 --json" +
+                           z.options() + " 2>/dev/null",
+                       out);
+  if (code != 0) return "exit " + std::to_string(code) + ": " + out;
+  const auto j = nlohmann::json::parse(out, nullptr, false);
+  if (j.is_discarded()) return "no JSON summary: " + out;
+  if (j.value("check", "") != "pass") return "check: " + j.dump();
+  if (j.at("order_independence").at("missing") != 0) return "order independence: " + j.dump();
+  if (j.at("parallel").at("ranks") != 3) return "not 3 ranks: " + j.dump();
+  g_points += j.at("parallel").at("points").get<std::uint64_t>();
+  return "";
+}
+
+TEST(MpiRandomDomains, EveryMeshPassesTheChecker) {
+  const char* env = std::getenv("PDR_MPI_CASES");
+  const int cases = env ? std::atoi(env) : 8;
+  refine::test::check_property("MpiMeshPassesEveryCheck", cases, [] {
+    const Plc plc = *pdr::test::gen_admissible_domain();
+    // A volume bound fine enough that the interior, coarse in M_o (--initial-tets 300),
+    // is refined by the parallel phase.
+    const Point e = refine::test::box_extent(plc);
+    refine::test::Sizing z;
+    z.max_volume = e[0] * e[1] * e[2] / *rc::gen::inRange(2000, 6000);
+    const std::string why = failure(plc, z);
+    if (why.empty()) return;
+    std::ofstream("mpi-counterexample.poly")
+        << pdr::test::poly_text(plc, "shrunk counterexample of MpiRandomDomains\noptions:" + z.options());
+    RC_LOG() << "options:" << z.options() << "\n" << why;
+    RC_FAIL("mpirun pdr mesh fails on an admissible domain");
+  }, 0x3A9D);
+  EXPECT_GT(g_points, 0u) << "the parallel phases never committed a point";
+  std::printf("%d domains, %llu points committed in parallel\n", cases,
+              static_cast<unsigned long long>(g_points));
+}
+
+}  // namespace
+}  // namespace pdr::par
