@@ -15,10 +15,17 @@
 // number of tets with ratio >= 2 decided exactly (refine/quality.hpp).
 //
 // Usage: bench_mesh [--pdr PATH] [--tetgen PATH] [--data DIR] [--runs N] [--no-check]
-//                   [--keep] [--outside] [CASE.poly:V ...]
+//                   [--keep] [--outside] [--parallel] [CASE.poly:V ...]
 // Default cases: cube-in-cube.poly and tee.poly at about 1M tets (see kDefaultCases);
 // --outside: the domains outside the theory of kOutsideCases (issue #11's benchmark). The
 // checker runs on both meshers' outputs; a failing check is named.
+// --parallel: `mpirun -n P pdr mesh` (issue #8's benchmark): per case, in the same run, the
+// sequential command, np = 1 and np = 2 (each with --json, its summary read from its log),
+// and TetGen; prints wall times, the speed-ups np = 1 / sequential and np = 2 / np = 1
+// against the targets (np = 1 at most 1.15x the sequential time, np = 2 at least 1.6x
+// faster than np = 1), the np = 2 run's phases (coarse M_o, parallel phase, absorption,
+// completion) and, per rank, busy / phase seconds (the share of the parallel phase in
+// which the rank worked rather than waited).
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -29,6 +36,9 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "io/mesh_io.hpp"
 #include "refine/quality.hpp"
@@ -45,6 +55,9 @@ namespace {
 #endif
 #ifndef PDR_BENCH_DATA
 #define PDR_BENCH_DATA "data"
+#endif
+#ifndef PDR_BENCH_MPIEXEC
+#define PDR_BENCH_MPIEXEC "mpirun"
 #endif
 #ifndef PDR_BENCH_EXTRA
 #define PDR_BENCH_EXTRA "bench/data"
@@ -162,13 +175,83 @@ void print(const char* name, const Run& r, const Quality& q) {
               double(r.peak) / n, q.max_ratio, q.skinny, r.exit_code);
 }
 
+// The JSON summary a `pdr mesh --json` child wrote to its log (an empty object if none).
+nlohmann::json summary_of(const fs::path& log) {
+  std::ifstream in(log);
+  std::string text, line;
+  bool inside = false;  // from the line "{" to the line "}" (stderr lines come before)
+  while (std::getline(in, line)) {
+    inside = inside || line == "{";
+    if (inside) text += line + "\n";
+    if (inside && line == "}") break;
+  }
+  auto j = nlohmann::json::parse(text, nullptr, false);
+  return j.is_discarded() ? nlohmann::json::object() : j;
+}
+
+// --parallel: the sequential command, np = 1, np = 2 and TetGen on one case.
+bool parallel_case(const std::string& pdr, const std::string& tetgen, const fs::path& poly,
+                   const std::string& volume, const fs::path& dir) {
+  const std::string prefix = (dir / "pdr" / poly.stem()).string();
+  const std::vector<std::string> mesh = {pdr, "mesh", poly.string(), "-o", prefix, "--ratio", "2",
+                                         "--max-volume", volume, "--no-check", "--formats",
+                                         "node", "--json"};
+  auto mpirun = [&](int np) {
+    std::vector<std::string> a = {PDR_BENCH_MPIEXEC, "-n", std::to_string(np), "--oversubscribe",
+                                  "--allow-run-as-root"};
+    a.insert(a.end(), mesh.begin(), mesh.end());
+    return a;
+  };
+  const Run seq = run_child(mesh, dir / "seq.log");
+  const Quality sq = measure(prefix);
+  const Run np1 = run_child(mpirun(1), dir / "np1.log");
+  const Run np2 = run_child(mpirun(2), dir / "np2.log");
+  const Quality pq = measure(prefix);
+  const fs::path tpoly = dir / "tetgen" / poly.filename();
+  fs::copy_file(poly, tpoly, fs::copy_options::overwrite_existing);
+  const Run t = run_child({tetgen, "-pq2.0a" + volume, "-Q", tpoly.string()}, dir / "tetgen.log");
+  const Quality tq = measure((dir / "tetgen" / (poly.stem().string() + ".1")).string());
+  std::printf("%s, V = %s\n", poly.filename().c_str(), volume.c_str());
+  print("seq", seq, sq);
+  std::printf("  np=1    %7.2f s wall %7.2f s cpu, exit %d\n", np1.wall, np1.cpu, np1.exit_code);
+  print("np=2", np2, pq);
+  print("TetGen", t, tq);
+  const double r1 = np1.wall / seq.wall, r2 = np1.wall / np2.wall;
+  std::printf("  np=1 / sequential: %.2fx wall (target <= 1.15: %s)\n", r1,
+              r1 <= 1.15 ? "met" : "NOT MET");
+  std::printf("  np=2 speed-up over np=1: %.2fx wall (target >= 1.6: %s)\n", r2,
+              r2 >= 1.6 ? "met" : "NOT MET");
+  std::printf("  np=2 vs TetGen: %.2fx TetGen's tets/s (wall)\n",
+              (double(pq.tets) / np2.wall) / (double(tq.tets) / t.wall));
+  const nlohmann::json j = summary_of(dir / "np2.log");
+  if (j.contains("seconds")) {
+    std::printf("  np=2 phases:");
+    for (const auto& [k, v] : j.at("seconds").items()) std::printf(" %s %.2f s", k.c_str(), v.get<double>());
+    std::printf("\n");
+  }
+  if (j.contains("parallel"))
+    for (const auto& r : j.at("parallel").at("per_rank"))
+      std::printf("  rank %d: %.2f s phase, %.2f s busy (%.0f%%), %llu commits (%llu while "
+                  "waiting), %llu setbacks, %llu tets migrated, %llu messages\n",
+                  r.at("rank").get<int>(), r.at("seconds").get<double>(),
+                  r.at("busy_seconds").get<double>(),
+                  100 * r.at("busy_seconds").get<double>() /
+                      std::max(1e-9, r.at("seconds").get<double>()),
+                  r.at("commits").get<unsigned long long>(),
+                  r.at("local_while_waiting").get<unsigned long long>(),
+                  r.at("setbacks").get<unsigned long long>(),
+                  r.at("tets_migrated").get<unsigned long long>(),
+                  r.at("messages_sent").get<unsigned long long>());
+  return seq.exit_code == 0 && np1.exit_code == 0 && np2.exit_code == 0 && sq.read && pq.read;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string pdr = PDR_BENCH_PDR, tetgen = PDR_BENCH_TETGEN;
   fs::path data = PDR_BENCH_DATA;
   int runs = 1;
-  bool check = true, keep = false, outside = false;
+  bool check = true, keep = false, outside = false, parallel = false;
   std::vector<Case> cases;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -186,15 +269,18 @@ int main(int argc, char** argv) {
     else if (a == "--no-check") check = false;
     else if (a == "--keep") keep = true;
     else if (a == "--outside") outside = true;
+    else if (a == "--parallel") parallel = true;
     else if (const auto colon = a.rfind(':'); colon != std::string::npos && colon > 0)
       cases.push_back({a.substr(0, colon), a.substr(colon + 1)});
     else {
       std::fprintf(stderr,
                    "usage: bench_mesh [--pdr PATH] [--tetgen PATH] [--data DIR] [--runs N] "
-                   "[--no-check] [--keep] [--outside] [CASE.poly:V ...]\n");
+                   "[--no-check] [--keep] [--outside] [--parallel] [CASE.poly:V ...]\n");
       return 2;
     }
   }
+  // --parallel: the paper's largest run, cube-in-cube at about 4M tets.
+  if (cases.empty() && parallel) cases.push_back({"cube-in-cube.poly", "0.0005"});
   if (cases.empty() && outside) cases.assign(std::begin(kOutsideCases), std::end(kOutsideCases));
   if (cases.empty()) cases.assign(std::begin(kDefaultCases), std::end(kDefaultCases));
 
@@ -206,9 +292,23 @@ int main(int argc, char** argv) {
   const fs::path dir = tmpl;
   fs::create_directories(dir / "pdr");
   fs::create_directories(dir / "tetgen");
+  int status = 0;
+  if (parallel) {
+    std::printf("pdr mesh sequential, mpirun -n 1 and -n 2 pdr mesh (--ratio 2 --no-check), "
+                "TetGen (-pq2.0a<V>), each a child process\n");
+    for (const Case& c : cases) {
+      const fs::path poly = fs::path(c.poly).is_absolute() || fs::exists(c.poly)
+                                ? fs::path(c.poly)
+                                : data / c.poly;
+      for (int run = 0; run < runs; ++run)
+        if (!parallel_case(pdr, tetgen, poly, c.volume, dir)) status = 1;
+    }
+    if (keep) std::printf("outputs kept in %s\n", dir.c_str());
+    else fs::remove_all(dir);
+    return status;
+  }
   std::printf("pdr mesh (--ratio 2) vs TetGen (-pq2.0a<V>), each a child process; peak = "
               "max RSS of the process; B/tet = peak / tets\n");
-  int status = 0;
   for (const Case& c : cases) {
     const fs::path poly = fs::path(c.poly).is_absolute() || fs::exists(c.poly)
                               ? fs::path(c.poly)

@@ -37,6 +37,13 @@ void MpiSession::abort(int code) {
   std::abort();  // MPI_Abort does not return; if it did, do not go on
 }
 
+int launcher_world_size() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS",
+                        "SLURM_STEP_NUM_TASKS"})
+    if (const char* n = std::getenv(v); n != nullptr && std::atoi(n) > 0) return std::atoi(n);
+  return 0;
+}
+
 bool launched_by_mpi() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE",
                         "MPI_LOCALNRANKS", "SLURM_STEP_NUM_TASKS"})

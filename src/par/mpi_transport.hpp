@@ -38,6 +38,8 @@ class MpiSession {
 // True when this process was started by an MPI launcher (mpirun, mpiexec, srun): the
 // launchers' environment variables are set.
 bool launched_by_mpi();
+// The number of ranks the launcher started, from its environment (0: not said).
+int launcher_world_size();
 
 class MpiTransport final : public Transport {
  public:
