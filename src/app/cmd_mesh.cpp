@@ -117,6 +117,9 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
                 "Under mpirun: refine the interior sequentially to about K tets before "
                 "distributing (0: automatic)")
       ->capture_default_str();
+  c->add_option("--inject-latency", a.inject_latency_us,
+                "Under mpirun: hold every message that many microseconds before delivery")
+      ->check(CLI::Range(0, 10'000'000));
   return c;
 }
 
@@ -154,8 +157,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   timer.lap("initial");
   double t_before = 0;  // parallel runs: the phases before rank 0's completion
   std::optional<refine::RefineResult> refined =
-      world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.seed, summary,
-                                            timer, t_before)
+      world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.inject_latency_us,
+                                            args.seed, summary, timer, t_before)
                        : refine::refine(vm, opt);
   if (!refined) return kExitOk;  // not rank 0: rank 0 writes, checks and decides the code
   const refine::RefineResult& rr = *refined;

@@ -49,6 +49,7 @@ struct MeshArgs {
   std::uint64_t seed = 0x5EED;
   unsigned threads = 2;
   std::size_t initial_tets = 0;        // mpirun: M_o's interior size (0: automatic)
+  std::uint64_t inject_latency_us = 0; // mpirun: each message held this long
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
 int run_mesh(const MeshArgs& args);

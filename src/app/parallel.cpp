@@ -2,6 +2,7 @@
 #include "app/parallel.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -105,6 +106,7 @@ World& world() {
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
+                                                       std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds) {
   const World w = world();
@@ -126,7 +128,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
           par::partition_tets(vm.dt.store(), vm.inside, static_cast<std::uint32_t>(w.size), seed);
       par::RankResult mine;
       {
-        par::MpiTransport t;
+        par::MpiTransport t{std::chrono::microseconds(latency_us)};
         mine = par::refine_part(vm, part, t, {opt.ratio, opt.size, opt.max_volume}, seed);
       }
       seconds += timer.lap("parallel");
@@ -150,6 +152,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   }
   summary.set("parallel", nlohmann::json{{"schema_version", 1},
                                          {"ranks", w.size},
+                                         {"injected_latency_us", latency_us},
                                          {"distributed", distribute},
                                          {"initial_tets", m0_tets},
                                          {"points", points.size()},

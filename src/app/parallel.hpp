@@ -29,10 +29,12 @@ World& world();
 // The refinement of vm by every rank of the run (world().size > 1). On rank 0: the result of
 // the completion, with the parallel figures in the summary (object "parallel") and on
 // stderr; elsewhere nullopt (rank 0 finishes the run). `seconds` gets the wall time of the
-// phases before the completion (coarse, parallel, gather, absorb).
+// phases before the completion (coarse, parallel, gather, absorb). `latency_us` > 0: every
+// message of the parallel phase is held that long before it is delivered.
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
+                                                       std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds);
 

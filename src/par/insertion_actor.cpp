@@ -75,8 +75,11 @@ void InsertionActor::local_step(const Waiting& w) {
     ++stats_.gone;
     return;
   }
-  if (t == kNoTet || locked_.count(t) != 0) {  // a given point, or the search's own tet
+  // A given point, the search's own tet, or a step parked before (it needed other ranks:
+  // trying it again at every wait would rebuild its cavity for nothing).
+  if (t == kNoTet || w.parked || locked_.count(t) != 0) {
     parked_.push_back(w);
+    parked_.back().parked = true;
     return;
   }
   const RootCavity rc = search_.root_cavity(sub_, rules_->point(sub_, t), t);
@@ -85,6 +88,7 @@ void InsertionActor::local_step(const Waiting& w) {
       std::any_of(rc.cavity.conflict.begin(), rc.cavity.conflict.end(), locked) ||
       std::any_of(rc.cavity.ring.begin(), rc.cavity.ring.end(), locked)) {
     parked_.push_back(w);
+    parked_.back().parked = true;
     return;
   }
   ++stats_.local_while_waiting;

@@ -94,6 +94,7 @@ class InsertionActor {
     Gid tet = kNoGid;  // refinement: the tet whose step this is (p is its circumcenter)
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again
+    bool parked = false;     // local_step() found it needs other ranks
   };
   struct Search {
     std::uint64_t id = 0;

@@ -51,7 +51,7 @@ bool launched_by_mpi() {
   return false;
 }
 
-MpiTransport::MpiTransport() {
+MpiTransport::MpiTransport(std::chrono::microseconds latency) : latency_(latency) {
   check(MPI_Comm_dup(MPI_COMM_WORLD, &messages_), "MPI_Comm_dup");
   check(MPI_Comm_dup(MPI_COMM_WORLD, &reductions_), "MPI_Comm_dup");
   MPI_Comm_set_errhandler(messages_, MPI_ERRORS_RETURN);
@@ -103,6 +103,8 @@ std::size_t MpiTransport::do_poll(const Deliver& deliver, std::size_t max) {
   } done{polling_};
   reap();
   std::size_t n = 0;
+  const bool hold = latency_.count() > 0;
+  const auto now = hold ? Clock::now() : Clock::time_point{};
   while (n < max) {
     int found = 0;
     MPI_Message msg;
@@ -111,9 +113,20 @@ std::size_t MpiTransport::do_poll(const Deliver& deliver, std::size_t max) {
     if (!found) break;
     int count = 0;
     MPI_Get_count(&status, MPI_BYTE, &count);
-    incoming_.resize(static_cast<std::size_t>(count));
-    check(MPI_Mrecv(incoming_.data(), count, MPI_BYTE, &msg, MPI_STATUS_IGNORE), "MPI_Mrecv");
+    Bytes& into = hold ? held_.emplace_back(Held{status.MPI_SOURCE, {}, now + latency_}).bytes
+                       : incoming_;
+    into.resize(static_cast<std::size_t>(count));
+    check(MPI_Mrecv(into.data(), count, MPI_BYTE, &msg, MPI_STATUS_IGNORE), "MPI_Mrecv");
+    if (hold) continue;  // delivered below, when its time has come
     deliver(status.MPI_SOURCE, incoming_);
+    ++n;
+  }
+  // Held messages in arrival order: their times are too, so FIFO per pair is kept.
+  while (hold && n < max && !held_.empty() && held_.front().due <= now) {
+    incoming_ = std::move(held_.front().bytes);
+    const int from = held_.front().from;
+    held_.pop_front();
+    deliver(from, incoming_);
     ++n;
   }
   return n;

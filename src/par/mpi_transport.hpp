@@ -12,6 +12,8 @@
 
 #include <mpi.h>
 
+#include <chrono>
+#include <deque>
 #include <vector>
 
 #include "par/transport.hpp"
@@ -43,7 +45,10 @@ int launcher_world_size();
 
 class MpiTransport final : public Transport {
  public:
-  MpiTransport();  // precondition: MPI is initialised
+  // Precondition: MPI is initialised. `latency` > 0: every message is held that long after
+  // it arrives before poll() delivers it (latency injection, --inject-latency; a held
+  // message is still in flight for termination detection).
+  explicit MpiTransport(std::chrono::microseconds latency = {});
   ~MpiTransport() override;
   MpiTransport(const MpiTransport&) = delete;
   MpiTransport& operator=(const MpiTransport&) = delete;
@@ -69,6 +74,14 @@ class MpiTransport final : public Transport {
   std::vector<Outgoing> sending_;
   bool polling_ = false;
   Bytes incoming_;
+  using Clock = std::chrono::steady_clock;
+  struct Held {
+    int from = 0;
+    Bytes bytes;
+    Clock::time_point due;
+  };
+  std::chrono::microseconds latency_;
+  std::deque<Held> held_;
   Reduction mine_{}, sum_{};
   MPI_Request reduction_ = MPI_REQUEST_NULL;
 };
