@@ -15,6 +15,7 @@
 #include "par/partition.hpp"
 #include "par/point_tets.hpp"
 #include "par/sim_network.hpp"
+#include "par/sim_run.hpp"
 
 namespace pdr::par {
 namespace {
@@ -45,22 +46,8 @@ void run_ranks(bool clustered, std::uint64_t first_seed, std::uint64_t last_seed
       actors[rng() % static_cast<std::size_t>(ranks)]->add_point(p);
       ASSERT_EQ(reference.insert(p).outcome, Outcome::Inserted);
     }
-    std::vector<bool> done(static_cast<std::size_t>(ranks), false);
-    std::uniform_int_distribution<int> pick(0, ranks - 1);
-    std::bernoulli_distribution deliver(0.5);
-    std::uint64_t steps = 0;
-    while (!std::all_of(done.begin(), done.end(), [](bool d) { return d; })) {
-      ASSERT_LT(++steps, 20'000'000u) << "seed " << seed << ": no termination";
-      if (deliver(net.rng()) && net.deliver_one()) continue;
-      const int r = pick(net.rng());
-      if (actors[static_cast<std::size_t>(r)]->step() && !done[static_cast<std::size_t>(r)]) {
-        if (std::none_of(done.begin(), done.end(), [](bool d) { return d; })) {
-          EXPECT_EQ(net.in_flight(), 0u) << "seed " << seed << ": concluded with messages in flight";
-          for (const auto& a : actors) EXPECT_TRUE(a->idle()) << "seed " << seed;
-        }
-        done[static_cast<std::size_t>(r)] = true;
-      }
-    }
+    const std::uint64_t steps = test::run_to_termination(net, actors, seed, 20'000'000u);
+    ASSERT_GT(steps, 0u);
     std::vector<test::PointTet> got;
     InsertionStats run;
     for (const auto& a : actors) {

@@ -22,11 +22,22 @@
 #include "par/partition.hpp"
 #include "par/point_tets.hpp"
 #include "par/sim_network.hpp"
+#include "par/sim_run.hpp"
 
 namespace pdr::par {
 namespace {
 
 constexpr double kTargetVolume = 0.05;
+
+// A tet as its four points, sorted (the same for any numbering of the same tet).
+test::PointTet point_tet(const Point& a, const Point& b, const Point& c, const Point& d) {
+  std::array<Point, 4> p{a, b, c, d};
+  std::sort(p.begin(), p.end());
+  test::PointTet q;
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t k = 0; k < 3; ++k) q[3 * i + k] = p[i][k];
+  return q;
+}
 
 struct SimRun {
   std::vector<Point> points;
@@ -49,25 +60,8 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
         seed, rules.back().get()));
     actors.back()->add_wanted_tets();
   }
-  std::vector<bool> done(static_cast<std::size_t>(ranks), false);
-  std::uniform_int_distribution<int> pick(0, ranks - 1);
-  std::bernoulli_distribution deliver(0.5);
-  std::uint64_t steps = 0;
-  while (!std::all_of(done.begin(), done.end(), [](bool d) { return d; })) {
-    if (++steps > 50'000'000u) {
-      ADD_FAILURE() << "seed " << seed << ": no termination";
-      return out;
-    }
-    if (deliver(net.rng()) && net.deliver_one()) continue;
-    const int r = pick(net.rng());
-    if (actors[static_cast<std::size_t>(r)]->step() && !done[static_cast<std::size_t>(r)]) {
-      if (std::none_of(done.begin(), done.end(), [](bool d) { return d; })) {
-        EXPECT_EQ(net.in_flight(), 0u) << "seed " << seed << ": concluded with messages in flight";
-        for (const auto& a : actors) EXPECT_TRUE(a->idle()) << "seed " << seed;
-      }
-      done[static_cast<std::size_t>(r)] = true;
-    }
-  }
+  const std::uint64_t steps = test::run_to_termination(net, actors, seed, 50'000'000u);
+  if (steps == 0) return out;
   for (const auto& a : actors) {
     const Submesh& s = a->submesh();
     const auto problems = s.check();
@@ -79,12 +73,8 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
     for (TetId t = 0; t < st.slots(); ++t)
       if (st.is_alive(t) && !st.is_proxy(t) && !st.is_ghost(t) && s.inside(t)) {
         const VertexId* v = st.vertices(t);
-        std::array<Point, 4> p{s.points()[v[0]], s.points()[v[1]], s.points()[v[2]], s.points()[v[3]]};
-        std::sort(p.begin(), p.end());
-        test::PointTet q;
-        for (std::size_t i = 0; i < 4; ++i)
-          for (std::size_t k = 0; k < 3; ++k) q[3 * i + k] = p[i][k];
-        out.inside_tets.push_back(q);
+        const auto pts = s.points();
+        out.inside_tets.push_back(point_tet(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]));
       }
     out.stats.commits += a->stats().commits;
     out.stats.deferred += a->stats().deferred;
@@ -117,12 +107,7 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t) && m.is_inside(t)) {
         const VertexId* v = s.vertices(t);
-        std::array<Point, 4> p{m.dt.point(v[0]), m.dt.point(v[1]), m.dt.point(v[2]), m.dt.point(v[3])};
-        std::sort(p.begin(), p.end());
-        test::PointTet q;
-        for (std::size_t i = 0; i < 4; ++i)
-          for (std::size_t k = 0; k < 3; ++k) q[3 * i + k] = p[i][k];
-        want.push_back(q);
+        want.push_back(point_tet(m.dt.point(v[0]), m.dt.point(v[1]), m.dt.point(v[2]), m.dt.point(v[3])));
       }
     EXPECT_TRUE(test::sorted(run.inside_tets) == test::sorted(want))
         << "seed " << seed << ": the submeshes are not M_o plus the committed points";
