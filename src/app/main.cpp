@@ -7,6 +7,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <streambuf>
 #include <string>
 #include <utility>
@@ -63,6 +64,9 @@ int dispatch(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
+  // Under mpirun only `pdr mesh` (and the default job) is parallel; the other commands
+  // run on rank 0 alone (the others would write the same files at once).
+  if ((cdel->parsed() || cchk->parsed()) && world().rank != 0) return kExitOk;
   if (cdel->parsed()) return run_delaunay(del);
   if (cchk->parsed()) return run_check(chk);
   if (cmesh->parsed()) return run_mesh(mesh);
@@ -106,33 +110,44 @@ class NullBuffer final : public std::streambuf {
 };
 
 // Under mpirun (app/parallel.hpp): every rank runs the command; only rank 0 prints (the
-// others' standard streams are muted, so a bad input is reported once); every rank ends
+// others' standard streams are muted, so a bad input is reported once; a rank that fails
+// where rank 0 did not says so at the end); every rank ends
 // with rank 0's exit code. A rank whose run ends in an exception other than bad input
 // (which every rank meets alike, before any exchange) ends the whole run at once, with
 // MPI_Abort and its exit code: the other ranks may be waiting for it.
 int run_ranks(int argc, char** argv) {
   pdr::par::MpiSession session(&argc, &argv);
-  world() = {session.rank(), session.size()};
+  world().rank = session.rank();
+  world().size = session.size();
   NullBuffer muted;
+  std::ostringstream held;  // this rank's error messages, said only if rank 0 did not fail
   std::streambuf* const out = std::cout.rdbuf();
   std::streambuf* const err = std::cerr.rdbuf();
   if (session.rank() != 0) {
     std::cout.rdbuf(&muted);
-    std::cerr.rdbuf(&muted);
+    std::cerr.rdbuf(held.rdbuf());
   }
   int code = kExitOk;
+  bool abandoned = false;
   try {
     code = dispatch(argc, argv);
   } catch (const pdr::InputError& e) {
     std::cerr << "pdr: " << e.what() << "\n";
     code = kExitBadInput;
+  } catch (const RunAbandoned&) {
+    abandoned = true;  // another rank failed, and says why
+    code = *world().decided;
   } catch (...) {
     const auto [failed, what] = exit_code_of(std::current_exception());
     std::fprintf(stderr, "pdr: rank %d: %s\n", session.rank(), what.c_str());
     if (session.size() > 1) pdr::par::MpiSession::abort(failed);
     code = failed;
   }
+  const int mine = code;
   code = agree_exit_code(code);
+  // A failure that rank 0 did not meet (a file missing on one host): said by this rank.
+  if (mine != kExitOk && !abandoned && session.rank() != 0 && !world().root_failed)
+    std::fprintf(stderr, "pdr: rank %d failed:\n%s", session.rank(), held.str().c_str());
   std::cout.flush();
   std::cout.rdbuf(out);
   std::cerr.rdbuf(err);

@@ -2,10 +2,12 @@
 #include "app/parallel.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "par/mpi_collect.hpp"
 #include "par/mpi_transport.hpp"
@@ -117,6 +119,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   vm.missing_subsegments.clear();
   const std::size_t m0_tets = vm.inside_tets();
   seconds = timer.lap("coarse");
+  if (const int other = checkpoint(0); other != 0)
+    throw RunAbandoned("another rank failed (exit " + std::to_string(other) + ")");
   // A coarse run that stopped at its cap, or left D out of T, is not a mesh to distribute:
   // every rank then leaves the whole refinement to rank 0.
   const bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
@@ -129,7 +133,15 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       par::RankResult mine;
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
-        mine = par::refine_part(vm, part, t, {opt.ratio, opt.size, opt.max_volume}, seed);
+        try {
+          mine = par::refine_part(vm, part, t, {opt.ratio, opt.size, opt.max_volume}, seed);
+        } catch (const std::exception& e) {
+          // Here, not after the transport's destructor: it would wait for sends and a
+          // reduction round that the other ranks, waiting for this one, never complete.
+          std::fprintf(stderr, "pdr: rank %d: internal error in the parallel phase: %s\n",
+                       w.rank, e.what());
+          par::MpiSession::abort(4);
+        }
       }
       seconds += timer.lap("parallel");
       points = par::gather_points(mine.points);
@@ -164,8 +176,21 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   return refine::refine(vm, rest);
 }
 
+int checkpoint(int code) {
+  World& w = world();
+  const std::array<int, 2> m = par::max_over_ranks({code, w.rank == 0 ? code : 0});
+  w.checkpoint_passed = true;
+  w.root_failed = m[1] != 0;
+  if (m[0] != 0) w.decided = m[0];
+  return m[0];
+}
+
 int agree_exit_code(int code) {
-  return world().size > 1 ? par::broadcast_from_root(code) : code;
+  const World& w = world();
+  if (w.size == 1) return code;
+  if (w.decided) return *w.decided;
+  if (w.checkpoint_passed) return par::broadcast_from_root(code);
+  return checkpoint(code);
 }
 
 }  // namespace pdr::app

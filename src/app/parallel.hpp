@@ -13,18 +13,35 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 
 #include "app/summary.hpp"
 #include "refine/seq_refinement.hpp"
 
 namespace pdr::app {
 
-// This process's place in the run: set once by main (rank 0 of 1 without mpirun).
+// This process's place in the run: set once by main (rank 0 of 1 without mpirun), and
+// where the ranks stand on the run's outcome (below).
 struct World {
   int rank = 0;
   int size = 1;
+  bool checkpoint_passed = false;  // the ranks have met at checkpoint()
+  std::optional<int> decided;      // the run's exit code, when the checkpoint fixed it
+  bool root_failed = false;        // at the checkpoint, rank 0 had failed too
 };
 World& world();
+
+// The ranks' first meeting (before any other exchange of a parallel run, and at the end
+// of a run that had none): every rank gives its exit code so far (0: going on), and gets
+// the largest. A non-zero result fixes the run's exit code (World::decided): a rank that
+// failed alone (bad input on one host only) ends every rank without a hang.
+int checkpoint(int code);
+
+// Thrown on the ranks that were going on when the checkpoint says another one failed.
+class RunAbandoned : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // The refinement of vm by every rank of the run (world().size > 1). On rank 0: the result of
 // the completion, with the parallel figures in the summary (object "parallel") and on
@@ -38,7 +55,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds);
 
-// The exit code of the run: rank 0's, on every rank (returns `code` without mpirun).
+// The exit code of the run, on every rank (`code` without mpirun): the code the checkpoint
+// fixed; else, past the checkpoint, rank 0's; else (no checkpoint yet: a command without
+// a parallel phase, or a failure before it) the checkpoint's.
 int agree_exit_code(int code);
 
 }  // namespace pdr::app

@@ -71,7 +71,7 @@ bool InsertionActor::step() {
 
 void InsertionActor::local_step(const Waiting& w) {
   const TetId t = w.tet == kNoGid ? kNoTet : sub_.find_tet(w.tet);
-  if (w.tet != kNoGid && t == kNoTet) {
+  if (w.tet != kNoGid && (t == kNoTet || sub_.deferred(t))) {
     ++stats_.gone;
     return;
   }
@@ -79,7 +79,6 @@ void InsertionActor::local_step(const Waiting& w) {
   // trying it again at every wait would rebuild its cavity for nothing).
   if (t == kNoTet || w.parked || locked_.count(t) != 0) {
     parked_.push_back(w);
-    parked_.back().parked = true;
     return;
   }
   const RootCavity rc = search_.root_cavity(sub_, rules_->point(sub_, t), t);
@@ -88,18 +87,17 @@ void InsertionActor::local_step(const Waiting& w) {
       std::any_of(rc.cavity.conflict.begin(), rc.cavity.conflict.end(), locked) ||
       std::any_of(rc.cavity.ring.begin(), rc.cavity.ring.end(), locked)) {
     parked_.push_back(w);
-    parked_.back().parked = true;
+    parked_.back().parked = rc.kind != RootCavity::Kind::Complete;  // it needs other ranks
     return;
   }
-  ++stats_.local_while_waiting;
-  complete(rc.cavity, w.tet);
+  if (complete(rc.cavity, w.tet)) ++stats_.local_while_waiting;
 }
 
-void InsertionActor::complete(const Cavity& c, Gid tet) {
+bool InsertionActor::complete(const Cavity& c, Gid tet) {
   if (rules_ != nullptr && !rules_->accept(sub_, c)) {
     ++stats_.deferred;
     if (const TetId t = sub_.find_tet(tet); t != kNoTet) sub_.mark_deferred(t);
-    return;
+    return false;
   }
   sub_.insert(c, rules_ != nullptr ? 1 : 0);
   ++stats_.commits;
@@ -108,12 +106,13 @@ void InsertionActor::complete(const Cavity& c, Gid tet) {
     made_.assign(sub_.created().begin(), sub_.created().end());
     for (const TetId t : made_) want(t);
   }
+  return true;
 }
 
 bool InsertionActor::start(Waiting w) {
   if (w.tet != kNoGid) {  // a tet's step: from the tet itself, while it is here
     const TetId t = sub_.find_tet(w.tet);
-    if (t == kNoTet) return false;
+    if (t == kNoTet || sub_.deferred(t)) return false;  // left, or deferred meanwhile
     w.p = rules_->point(sub_, t);
     active_ = true;
     s_ = Search{next_search_++, w, w.tet, 0, false, false};
@@ -162,8 +161,14 @@ void InsertionActor::round() {
     return;
   }
   if (rc.kind == RootCavity::Kind::Complete) {
+    // A tet's step inserts its circumcenter only while the tet exists (here, in the
+    // cavity): once another commit or a migration took it, p is no step of Fig. 2.
+    const bool gone = s_.w.tet != kNoGid && sub_.find_tet(s_.w.tet) == kNoTet;
     finish();
-    complete(rc.cavity, s_.w.tet);
+    if (gone)
+      ++stats_.gone;
+    else
+      complete(rc.cavity, s_.w.tet);
     return;
   }
   if (rc.fetch.count(sub_.id()) != 0) {  // tets on their way here: look again later
@@ -171,6 +176,8 @@ void InsertionActor::round() {
     return;
   }
   locked_.clear();
+  if (const TetId own = s_.w.tet == kNoGid ? kNoTet : sub_.find_tet(s_.w.tet); own != kNoTet)
+    locked_.insert(own);  // the step's own tet: no local step or FETCH may take it
   if (rc.walk) {
     locked_.insert(hint);
   } else {

@@ -94,7 +94,8 @@ class InsertionActor {
     Gid tet = kNoGid;  // refinement: the tet whose step this is (p is its circumcenter)
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again
-    bool parked = false;     // local_step() found it needs other ranks
+    bool parked = false;     // local_step() found it needs other ranks: not tried
+                             // locally again
   };
   struct Search {
     std::uint64_t id = 0;
@@ -122,7 +123,7 @@ class InsertionActor {
   void local_step(const Waiting& w);
   // A complete cavity at this rank: the rules accept it (commit, queue the new tets they
   // want) or defer it (mark the tet `tet`).
-  void complete(const Cavity& c, Gid tet);
+  bool complete(const Cavity& c, Gid tet);  // true: committed
 
   Transport& t_;
   Submesh sub_;

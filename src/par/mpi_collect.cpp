@@ -84,4 +84,13 @@ int broadcast_from_root(int value) {
   return value;
 }
 
+std::array<int, 2> max_over_ranks(std::array<int, 2> values) {
+  std::array<int, 2> out{};
+  MPI_Request r = MPI_REQUEST_NULL;
+  check(MPI_Iallreduce(values.data(), out.data(), 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &r),
+        "MPI_Iallreduce");
+  wait_asleep(r);
+  return out;
+}
+
 }  // namespace pdr::par

@@ -6,6 +6,7 @@
 // each function in the same order.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "geom/point.hpp"
@@ -21,5 +22,8 @@ std::vector<RankFigures> gather_figures(const RankFigures& mine);
 
 // Rank 0's value on every rank; the other ranks wait for it asleep (at most 1 ms late).
 int broadcast_from_root(int value);
+
+// The element-wise maximum of `values` over the ranks, on every rank (waiting asleep).
+std::array<int, 2> max_over_ranks(std::array<int, 2> values);
 
 }  // namespace pdr::par

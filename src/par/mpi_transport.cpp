@@ -38,8 +38,7 @@ void MpiSession::abort(int code) {
 }
 
 int launcher_world_size() {
-  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS",
-                        "SLURM_STEP_NUM_TASKS"})
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "SLURM_STEP_NUM_TASKS"})
     if (const char* n = std::getenv(v); n != nullptr && std::atoi(n) > 0) return std::atoi(n);
   return 0;
 }

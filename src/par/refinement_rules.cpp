@@ -64,8 +64,20 @@ bool RefinementRules::accept(const Submesh& s, const Cavity& c) {
       ++deferred_.outside;
       return false;
     }
-  for (const TetId t : c.conflict)
+  for (const TetId t : c.conflict) {
     if (encroaches(s, t, c.point)) return false;
+    // A subfacet face of a conflict tet survives only on the boundary (between two inside
+    // tets it cannot be, the flag changing across subfacets; checked all the same).
+    const VertexId* v = st.vertices(t);
+    for (int f = 0; f < 4; ++f) {
+      const auto& fv = tables::kFaceVertex[f];
+      if (subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]) &&
+          std::find(c.boundary.begin(), c.boundary.end(), half_face(t, f)) == c.boundary.end()) {
+        ++deferred_.removed;
+        return false;
+      }
+    }
+  }
   for (const TetId t : c.ring)
     if (encroaches(s, t, c.point)) return false;
   // A subsegment edge of a conflict tet survives only as an edge of the boundary.

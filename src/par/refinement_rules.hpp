@@ -12,8 +12,8 @@
 //   - p lies in no closed diametral ball of a subsegment that is an edge of a closure tet,
 //     and in no closed equatorial ball of a subfacet that is a face of one (the same exact
 //     predicates as the sequential step, refine/closure.hpp);
-//   - no subsegment that is an edge of a conflict tet disappears (it stays an edge of the
-//     cavity's boundary).
+//   - no subsegment that is an edge of a conflict tet, and no subfacet that is a face of
+//     one, disappears (it stays an edge or a face of the cavity's boundary).
 // Otherwise the step is deferred: the tet stays, and the sequential completion on rank 0
 // (docs/parallel.md) takes it up with Fig. 2's Refine(s)/Refine(f), the guards and the
 // conformity rules, as the sequential mesher would. Every committed step is thus a step
@@ -36,7 +36,7 @@ struct DeferCounts {
   std::uint64_t outside = 0;     // a conflict tet outside Ω
   std::uint64_t subsegment = 0;  // p encroaches a subsegment of the closure
   std::uint64_t subfacet = 0;    // p encroaches a subfacet of the closure
-  std::uint64_t removed = 0;     // the cavity would remove a subsegment
+  std::uint64_t removed = 0;     // the cavity would remove a subsegment or subfacet
 };
 
 class RefinementRules final : public StepRules {
