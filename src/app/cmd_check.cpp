@@ -103,6 +103,7 @@ int run_check(const CheckArgs& args) {
     if (explained) j["explain"] = check::to_json(*explained);
     if (args.vtu) j["vtu"] = vtu_written ? nlohmann::json(*args.vtu) : nlohmann::json(nullptr);
     j["seconds"] = timer.phases();
+    for (const auto& [phase, s] : report.seconds) j["seconds"]["check." + phase] = s;
     std::cout << j.dump(2) << '\n';
   } else {
     std::cout << check::to_text(report);

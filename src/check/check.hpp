@@ -88,6 +88,9 @@ struct Options {
   // relative_tolerance * |AB| of a segment AB's line, counts as lying on it.
   double relative_tolerance = 1e-10;
   bool check_overlap = true;          // validity.overlap (the costliest validity check)
+  // validity.overlap first tries the degree argument (degree.cpp), which looks at the
+  // boundary surface only; off, every pair of tets with meeting boxes is tested.
+  bool overlap_by_degree = true;
 };
 
 // Pass: no violation. Warn: no failure, but something was flagged or not judged (reason

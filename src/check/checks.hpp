@@ -55,6 +55,9 @@ CheckResult check_listed_faces(const Context& c);           // validity.faces
 
 // overlap.cpp
 CheckResult check_overlap(const Context& c);  // validity.overlap
+// degree.cpp: the degree argument's verdict on disjoint interiors (counts go to r).
+enum class DegreeVerdict { Disjoint, Overlap, PremisesFail };
+DegreeVerdict overlap_by_degree(const Context& c, CheckResult& r);
 
 // delaunay_empty.cpp
 CheckResult check_empty_circumspheres(const Context& c);  // delaunay.empty_sphere

@@ -56,6 +56,7 @@ std::optional<Sign> det3_filter(const Vec& u, const Vec& v, const Vec& w) {
   const double perm = std::fabs(u[0]) * (std::fabs(vywz) + std::fabs(vzwy)) +
                       std::fabs(v[0]) * (std::fabs(wyuz) + std::fabs(wzuy)) +
                       std::fabs(w[0]) * (std::fabs(uyvz) + std::fabs(uzvy));
+  if (perm == 0) return Sign::Zero;  // every term has an exactly zero factor (signs.hpp)
   return decide(det, kDet3Bound * perm + 0x1p-1000);
 }
 
@@ -164,6 +165,7 @@ Sign Plane::orient(const Point& q) const {
     if (in_range(w[0]) && in_range(w[1]) && in_range(w[2])) {
       const double det = w[0] * n_[0] + w[1] * n_[1] + w[2] * n_[2];
       const double perm = std::fabs(w[0]) * abs_[0] + std::fabs(w[1]) * abs_[1] + std::fabs(w[2]) * abs_[2];
+      if (perm == 0) return Sign::Zero;  // as in det3_filter
       if (auto s = decide(det, kDet3Bound * perm + 0x1p-1000)) return *s;
     }
   }
@@ -273,6 +275,7 @@ Sign orient2d(const Point& a, const Point& b, const Point& c, int drop) {
   const double acx = a[i] - c[i], acy = a[j] - c[j], bcx = b[i] - c[i], bcy = b[j] - c[j];
   if (in_range(acx) && in_range(acy) && in_range(bcx) && in_range(bcy)) {
     const double l = acx * bcy, r = acy * bcx;
+    if (l == 0 && r == 0) return Sign::Zero;  // each product has an exactly zero factor
     if (auto s = decide(l - r, kOrient2Bound * (std::fabs(l) + std::fabs(r)) + 0x1p-1000))
       return *s;
   }

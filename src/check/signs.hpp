@@ -16,6 +16,11 @@
 // 2^-1074), and the only underflow left is a small minor times an entry, whose absolute
 // error (2^-1075, times at most the lifts, < 2^302) is covered by an added slack of 2^-1000
 // (orient3d, det3) and 2^-700 (insphere). Otherwise the filter says "unsure".
+// Zero certificate (orient3d, det3, orient2d): a rounded difference is zero only when the
+// two doubles are equal, and with entries in range a product of nonzero entries is not
+// zero; so a permanent that is exactly zero means every term of the exact determinant has
+// an exactly zero factor, and the sign is Zero (coplanar points on an axis-parallel plane,
+// collinear points on an axis-parallel line), decided without the later stages.
 // Stage 2, integers: if all coordinates involved are integer multiples of one power of two
 // 2^e with quotients below 2^40 (3x3), 2^22 (lifted 4x4) or 2^60 (2x2), the determinant
 // is computed exactly in __int128 (bounds: 3x3 < 2^126, 4x4 < 2^122, 2x2 < 2^123). Catches the exact zeros of

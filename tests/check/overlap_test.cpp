@@ -1,6 +1,7 @@
 // validity.overlap against a brute-force oracle: every pair of tets, all 44 separating-axis
 // candidates (8 face normals, 36 edge cross products), projections compared in GMP
-// rationals; no grid, no pruning by shared vertices, no sign shortcuts.
+// rationals; no grid, no pruning by shared vertices, no sign shortcuts. Both methods of
+// the checker are held to it: the degree argument (degree.cpp) and the pairwise test.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -88,8 +89,77 @@ RC_GTEST_PROP(Overlap, AgreesWithBruteForceSeparatingAxes, ()) {
   RC_ASSERT(count(r, "validity.overlap", "overlapping_pairs") == expected);
 }
 
+// Appends mesh b to mesh a, its vertices renumbered after a's (no vertex shared).
+MeshData disjoint_union(MeshData a, const MeshData& b) {
+  const auto base = static_cast<std::uint32_t>(a.points.size());
+  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+  for (Tet t : b.tets) {
+    for (auto& v : t) v += base;
+    a.tets.push_back(t);
+  }
+  return a;
+}
+
+// Meshes that meet the degree argument's premises (positive tets, faces shared properly)
+// but may overlap: a Kuhn grid of 2^3 cubes plus a second, disjoint one-cube grid of
+// random size at a random offset (nested inside, crossing, touching, coinciding,
+// apart). Both methods agree with brute force and with each other.
+RC_GTEST_PROP(Overlap, DegreeArgumentAgreesWithBruteForce, ()) {
+  const double side = *rc::gen::element(0.25, 0.5, 1.0);
+  MeshData b = kuhn_grid(1, side);
+  const auto off = *rc::gen::container<std::vector<int>>(3, rc::gen::inRange(-3, 9));
+  for (Point& p : b.points)
+    for (int c = 0; c < 3; ++c) p[c] += off[static_cast<std::size_t>(c)] * 0.25;
+  MeshData m = disjoint_union(kuhn_grid(2), b);
+  if (*rc::gen::arbitrary<bool>()) {
+    // Rotated by (3/5, 4/5) about z then x: faces of one facet no longer coplanar in
+    // doubles, so the tests in space decide instead of the axis-parallel shortcuts.
+    for (Point& p : m.points) {
+      const double x = 0.6 * p[0] - 0.8 * p[1], y = 0.8 * p[0] + 0.6 * p[1];
+      p = {x, 0.6 * y - 0.8 * p[2], 0.8 * y + 0.6 * p[2]};
+    }
+  }
+  RC_PRE(std::all_of(m.tets.begin(), m.tets.end(), [&](const Tet& t) {
+    return exact::orient3d(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]) == Sign::Positive;
+  }));
+  const std::uint64_t expected = oracle_overlaps(m);
+  Options pairwise;
+  pairwise.overlap_by_degree = false;
+  const Report by_degree = run(m), by_pairs = run(m, pairwise);
+  const bool decided = count(by_degree, "validity.overlap", "degree.outer_cells_probed") > 0;
+  RC_CLASSIFY(decided, "decided by the degree argument");
+  RC_CLASSIFY(expected > 0, "overlapping");
+  RC_ASSERT(count(by_pairs, "validity.overlap", "overlapping_pairs") == expected);
+  // Same verdict (touching through partially overlapping coplanar faces fails both).
+  RC_ASSERT(result(by_degree, "validity.overlap").status == result(by_pairs, "validity.overlap").status);
+  if (decided && expected > 0) RC_ASSERT(count(by_degree, "validity.overlap", "degree.covered_probes") > 0);
+  if (decided && count(by_degree, "validity.overlap", "degree.covered_probes") == 0)
+    RC_ASSERT(result(by_pairs, "validity.overlap").status == Status::Pass);
+}
+
+TEST(Overlap, DegreeArgumentSeesANestedMeshThatNoBoundaryCrosses) {
+  // A unit cube's mesh inside a 4^3 grid, vertices apart: the two boundaries are disjoint,
+  // so only the probe just outside the inner surface (covered by the grid) finds it.
+  MeshData inner = kuhn_grid(1, 0.5);
+  for (Point& p : inner.points)
+    for (double& x : p) x += 1.25;
+  const Report r = run(disjoint_union(kuhn_grid(4), inner));
+  EXPECT_EQ(result(r, "validity.overlap").status, Status::Fail);
+  EXPECT_EQ(count(r, "validity.overlap", "degree.outer_cells_probed"), 2u);
+  EXPECT_GT(count(r, "validity.overlap", "degree.covered_probes"), 0u);
+  EXPECT_GT(count(r, "validity.overlap", "overlapping_pairs"), 0u);
+  // Apart, the same two meshes pass, decided by the argument alone.
+  for (Point& p : inner.points) p[0] += 10;
+  const Report apart = run(disjoint_union(kuhn_grid(4), inner));
+  EXPECT_EQ(result(apart, "validity.overlap").status, Status::Pass);
+  EXPECT_EQ(count(apart, "validity.overlap", "degree.outer_cells_probed"), 2u);
+  EXPECT_EQ(count(apart, "validity.overlap", "pairs_examined"), 0u);
+}
+
 TEST(Overlap, StructuredGridHasNoOverlapAndManyTouchingPairs) {
-  const Report r = run(kuhn_grid(4));
+  Options pairwise;
+  pairwise.overlap_by_degree = false;
+  const Report r = run(kuhn_grid(4), pairwise);
   EXPECT_EQ(result(r, "validity.overlap").status, Status::Pass);
   EXPECT_EQ(count(r, "validity.overlap", "exact_evaluations"), 0u);  // ties go to integers
 }
