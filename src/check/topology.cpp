@@ -1,36 +1,38 @@
-// Faces, boundary and edges of a tet soup by sorting (see topology.hpp).
+// Faces, boundary and edges of a tet soup (see topology.hpp), bucketed by smallest vertex:
+// a face (a < b < c) or an edge (a < b) belongs to vertex a, and the tets holding it are
+// among the tets incident to a. Buckets are filled in vertex order from the incidence
+// lists (a counting sort), and each bucket is sorted alone (a few dozen records), so the
+// faces and edges come out in lexicographic order without sorting the whole soup.
 #include "check/topology.hpp"
 
 #include <algorithm>
-#include <thread>
+
+#include "check/parallel.hpp"
 
 namespace pdr::check {
 namespace {
 
-template <class T, class Cmp>
-void parallel_sort(std::vector<T>& v, unsigned threads, Cmp cmp) {
-  if (threads < 2 || v.size() < (1u << 16)) {
-    std::sort(v.begin(), v.end(), cmp);
-    return;
-  }
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  {
-    std::jthread half([&] { std::sort(v.begin(), mid, cmp); });
-    std::sort(mid, v.end(), cmp);
-  }
-  std::inplace_merge(v.begin(), mid, v.end(), cmp);
-}
-
 struct Rec {
-  std::uint64_t ab;  // two smallest vertex ids
-  std::uint32_t c;   // largest vertex id
-  std::uint32_t tl;  // tet * 4 + local face
+  std::uint32_t b, c;  // the face's other two vertex ids, b <= c
+  std::uint32_t tl;    // tet * 4 + local face
+  bool operator<(const Rec& o) const {
+    return b != o.b ? b < o.b : (c != o.c ? c < o.c : tl < o.tl);
+  }
 };
 
 Tri sorted(Tri f) {
   std::sort(f.begin(), f.end());
   return f;
 }
+
+// One block of vertices' share of the topology, with face indices local to the block.
+struct Part {
+  std::vector<Tri> faces;
+  std::vector<std::uint32_t> face_start;  // local offsets into refs
+  std::vector<FaceRef> refs;
+  std::vector<std::uint32_t> boundary;    // local face indices
+  std::vector<std::uint64_t> edges;
+};
 
 }  // namespace
 
@@ -45,43 +47,112 @@ bool Topology::has_edge(std::uint32_t u, std::uint32_t v) const {
 }
 
 Topology build_topology(std::span<const Tet> tets, unsigned threads) {
-  Topology topo;
-  {
-    std::vector<Rec> recs;
-    recs.reserve(tets.size() * 4);
-    for (std::size_t t = 0; t < tets.size(); ++t)
-      for (int f = 0; f < 4; ++f) {
-        const Tri k = sorted(face_of(tets[t], f));
-        recs.push_back({(std::uint64_t{k[0]} << 32) | k[1], k[2],
-                        static_cast<std::uint32_t>(t * 4 + static_cast<std::size_t>(f))});
-      }
-    parallel_sort(recs, threads, [](const Rec& x, const Rec& y) {
-      if (x.ab != y.ab) return x.ab < y.ab;
-      if (x.c != y.c) return x.c < y.c;
-      return x.tl < y.tl;
-    });
-    topo.refs.reserve(recs.size());
-    for (std::size_t i = 0; i < recs.size();) {
-      std::size_t j = i;
-      topo.face_start.push_back(static_cast<std::uint32_t>(topo.refs.size()));
-      topo.faces.push_back({static_cast<std::uint32_t>(recs[i].ab >> 32),
-                            static_cast<std::uint32_t>(recs[i].ab), recs[i].c});
-      while (j < recs.size() && recs[j].ab == recs[i].ab && recs[j].c == recs[i].c) {
-        topo.refs.push_back({recs[j].tl >> 2, static_cast<std::uint8_t>(recs[j].tl & 3)});
-        ++j;
-      }
-      if (j - i == 1) topo.boundary.push_back(static_cast<std::uint32_t>(topo.faces.size() - 1));
-      i = j;
-    }
-    topo.face_start.push_back(static_cast<std::uint32_t>(topo.refs.size()));
-  }
-  topo.edges.reserve(tets.size() * 6);
+  // Incidence lists: each tet once in the list of each of its distinct vertices.
+  std::uint32_t n = 0;
+  for (const Tet& t : tets)
+    for (std::uint32_t v : t) n = std::max(n, v + 1);
+  std::vector<std::uint32_t> start(std::size_t{n} + 1, 0);
+  auto distinct = [](const Tet& t, int i) {
+    for (int j = 0; j < i; ++j)
+      if (t[j] == t[i]) return false;
+    return true;
+  };
   for (const Tet& t : tets)
     for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (t[i] != t[j]) topo.edges.push_back(edge_key(t[i], t[j]));
-  parallel_sort(topo.edges, threads, std::less<>());
-  topo.edges.erase(std::unique(topo.edges.begin(), topo.edges.end()), topo.edges.end());
+      if (distinct(t, i)) ++start[t[i] + 1];
+  for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> inc(start[n]);
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < tets.size(); ++t)
+      for (int i = 0; i < 4; ++i)
+        if (distinct(tets[t], i)) inc[fill[tets[t][i]]++] = static_cast<std::uint32_t>(t);
+  }
+  // One part per thread, over vertex ranges holding about equal numbers of incidences;
+  // each part's arrays are reserved to their bounds at once (growing them would copy and,
+  // on a virtual machine, fault in pages several times).
+  const unsigned nparts = std::max(1u, std::min(threads, 64u));
+  std::vector<std::uint32_t> cut(nparts + 1, n);
+  cut[0] = 0;
+  for (unsigned p = 1; p < nparts; ++p)
+    cut[p] = static_cast<std::uint32_t>(std::lower_bound(start.begin(), start.end() - 1,
+                                                         static_cast<std::uint32_t>(std::uint64_t{start[n]} * p / nparts)) -
+                                        start.begin());
+  std::vector<Part> parts(nparts);
+  parallel_blocks(nparts, nparts, 1, [&](unsigned, std::size_t b, std::size_t) {
+    Part& part = parts[b];
+    const std::uint32_t v0 = cut[b], v1 = std::max(cut[b], cut[b + 1]);
+    const std::size_t incidences = start[v1] - start[v0];
+    part.faces.reserve(incidences);  // each face counted in its smallest vertex's bucket
+    part.face_start.reserve(incidences);
+    part.refs.reserve(incidences);
+    part.boundary.reserve(incidences / 8);
+    part.edges.reserve(incidences * 3 / 2);
+    std::vector<Rec> recs;
+    std::vector<std::uint32_t> ends;
+    for (std::uint32_t u = v0; u < v1; ++u) {
+      recs.clear();
+      ends.clear();
+      for (std::uint32_t k = start[u]; k < start[u + 1]; ++k) {
+        const std::uint32_t t = inc[k];
+        const Tet& q = tets[t];
+        if (q[0] != q[1] && q[0] != q[2] && q[0] != q[3] && q[1] != q[2] && q[1] != q[3] && q[2] != q[3]) {
+          // Distinct vertices: the faces held by bucket u are those without vertex f where
+          // u is in the face and the face's other two vertices are greater.
+          int i = 0;
+          while (q[i] != u) ++i;
+          for (int f = 0; f < 4; ++f) {
+            if (f == i) continue;
+            std::uint32_t o[2];
+            int m = 0;
+            for (int j = 0; j < 4; ++j)
+              if (j != f && j != i) o[m++] = q[j];
+            if (o[0] > u && o[1] > u)
+              recs.push_back({std::min(o[0], o[1]), std::max(o[0], o[1]), t * 4 + static_cast<std::uint32_t>(f)});
+          }
+          for (std::uint32_t v : q)
+            if (v > u) ends.push_back(v);
+          continue;
+        }
+        for (int f = 0; f < 4; ++f) {
+          const Tri s = sorted(face_of(q, f));
+          if (s[0] == u) recs.push_back({s[1], s[2], t * 4 + static_cast<std::uint32_t>(f)});
+        }
+        for (std::uint32_t v : q)
+          if (v > u) ends.push_back(v);
+      }
+      std::sort(recs.begin(), recs.end());
+      for (std::size_t i = 0; i < recs.size();) {
+        std::size_t j = i;
+        part.face_start.push_back(static_cast<std::uint32_t>(part.refs.size()));
+        part.faces.push_back({u, recs[i].b, recs[i].c});
+        for (; j < recs.size() && recs[j].b == recs[i].b && recs[j].c == recs[i].c; ++j)
+          part.refs.push_back({recs[j].tl >> 2, static_cast<std::uint8_t>(recs[j].tl & 3)});
+        if (j - i == 1) part.boundary.push_back(static_cast<std::uint32_t>(part.faces.size() - 1));
+        i = j;
+      }
+      std::sort(ends.begin(), ends.end());
+      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+      for (std::uint32_t v : ends) part.edges.push_back(edge_key(u, v));
+    }
+  });
+  Topology topo;
+  std::size_t nf = 0, nr = 0, ne = 0;
+  for (const Part& p : parts) nf += p.faces.size(), nr += p.refs.size(), ne += p.edges.size();
+  topo.faces.reserve(nf);
+  topo.face_start.reserve(nf + 1);
+  topo.refs.reserve(nr);
+  topo.edges.reserve(ne);
+  for (const Part& p : parts) {
+    const auto face_base = static_cast<std::uint32_t>(topo.faces.size());
+    const auto ref_base = static_cast<std::uint32_t>(topo.refs.size());
+    topo.faces.insert(topo.faces.end(), p.faces.begin(), p.faces.end());
+    for (std::uint32_t s : p.face_start) topo.face_start.push_back(ref_base + s);
+    topo.refs.insert(topo.refs.end(), p.refs.begin(), p.refs.end());
+    for (std::uint32_t f : p.boundary) topo.boundary.push_back(face_base + f);
+    topo.edges.insert(topo.edges.end(), p.edges.begin(), p.edges.end());
+  }
+  topo.face_start.push_back(static_cast<std::uint32_t>(topo.refs.size()));
   return topo;
 }
 

@@ -1,5 +1,5 @@
 // Topology of a tet soup: its distinct faces (with the tets holding each), its boundary
-// faces (held by one tet), and its distinct edges. Computed by sorting, without trusting
+// faces (held by one tet), and its distinct edges. Computed from scratch, without trusting
 // any adjacency the mesh producer may have had; requires valid indices and < 2^30 tets.
 //
 // Local numbering: face `f` of tet (v0, v1, v2, v3) is the face opposite vertex vf. For a
