@@ -10,6 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
+#include "app/progress.hpp"
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "check/explain.hpp"
@@ -55,6 +56,8 @@ void cut_findings(check::Report& report, std::size_t n) {
 
 int run_check(const CheckArgs& args) {
   PhaseTimer timer;
+  Progress progress(Progress::wanted(args.json));
+  progress.phase("read");
   io::ReadInfo info;
   const MeshData mesh = io::read_mesh(args.mesh, &info);
   std::optional<Plc> domain;
@@ -70,12 +73,15 @@ int run_check(const CheckArgs& args) {
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
   opt.threads = args.threads;
+  if (progress.enabled())
+    opt.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
   const bool every_finding = args.explain || args.vtu;
   opt.max_reported = every_finding ? std::numeric_limits<std::size_t>::max() : args.max_reported;
   const auto view = check::view_of(mesh);
   check::Report report =
       domain ? check::check_mesh(view, *domain, opt) : check::check_mesh(view, opt);
   timer.lap("check");
+  progress.finish();
 
   std::optional<check::TetExplanation> explained;
   if (args.explain) explained = check::explain_tet(view, report, *args.explain);

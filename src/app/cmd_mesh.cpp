@@ -10,7 +10,6 @@
 // a domain outside the theory, or a vertex cap reached: in the surface phase nothing is
 // written); 4 an internal invariant failed (RefineError, SurfaceError: a bug, or an
 // inadmissible domain the guards did not catch).
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +21,7 @@
 #include "app/order_check.hpp"
 #include "app/parallel.hpp"
 #include "app/pipeline.hpp"
+#include "app/progress.hpp"
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "delaunay/export.hpp"
@@ -125,6 +125,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
 
 int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   PhaseTimer timer;
+  Progress progress(Progress::wanted(args.json) && world().size == 1);
+  progress.phase("analyze");
   check_range(plc);
   const auto formats = parse_formats(args.formats);
   domain::DomainAnalysis an = domain::analyze(plc);
@@ -144,17 +146,21 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   opt.d = an.report.feature.d;
   opt.admissible = an.report.admissible;
   opt.acute_vertices = refine::acute_vertices(an.report);  // the guards' shells
-  opt.progress = opt.progress || isatty(STDERR_FILENO) == 1;
+  if (progress.enabled())
+    opt.on_progress = [&progress](std::size_t vertices) { progress.count(vertices, "vertices"); };
+  progress.phase("surface");
   surface::SurfaceOptions so;
   so.max_vertices = args.options.max_vertices;  // --max-vertices bounds every phase
   surface::SurfaceInit si = surface::init_surface(an, so);
   summary.set("surface_vertices", si.mesh.vertex_count());
   summary.set("subfacets", si.mesh.live_subfacets());
   timer.lap("surface");
+  progress.phase("initial mesh");
   refine::VolumeMesh vm = refine::build_initial(std::move(si.mesh), an.domain.plc.holes,
                                                 args.seed);
   summary.set("initial_tets", vm.inside_tets());
   timer.lap("initial");
+  progress.phase("refine");
   double t_before = 0;  // parallel runs: the phases before rank 0's completion
   std::optional<refine::RefineResult> refined =
       world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.inject_latency_us,
@@ -216,12 +222,15 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
                                   "tetrahedralization were refused (see unsplit)");
     if (code == kExitOk) code = kExitNotGuaranteed;
   }
+  progress.phase("write");
   write_outputs(mesh, args.prefix, formats, timer, summary);
 
   if (args.check) {
     check::Options co;
     co.ratio_bound = opt.ratio;
     co.threads = args.threads;
+    if (progress.enabled())
+      co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
     const check::Report report = check::check_mesh(check::view_of(mesh), an.domain.plc, co);
     timer.lap("check");
     // quality.ratio failing is what exit 3 already reports; so is encroachment on an
@@ -244,6 +253,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
     if (other) code = kExitViolations;
     // Remarks 1-2: the mesh is DT(V) restricted to the domain, whatever the insertion
     // order (order_check.hpp); rebuilt here in a seeded order unlike the mesher's.
+    progress.phase("order check");
     const OrderCheck oc = check_order_independence(mesh, kOrderCheckSeed);
     timer.lap("order_check");
     summary.set("order_independence",

@@ -44,7 +44,7 @@ refine::RefineOptions coarse_options(const refine::RefineOptions& opt, double vo
                                      std::size_t tets) {
   constexpr double kAutoVolume = 16, kAutoRadius = 2.5, kAutoMaxTets = 100000;
   refine::RefineOptions c = opt;
-  c.progress = false;
+  c.on_progress = nullptr;
   const double v0 = volume / (tets > 0 ? static_cast<double>(tets) : kAutoMaxTets);
   refine::TetBounds in{opt.ratio, opt.size, opt.max_volume};
   if (in.max_volume)

@@ -40,9 +40,10 @@ constexpr Entry kChecks[] = {
 
 class Timer {
  public:
-  explicit Timer(Report& r) : report_(r) {}
+  Timer(Report& r, const Options& o) : report_(r), options_(o) {}
   template <class F>
   auto operator()(const char* phase, F&& f) {
+    if (options_.on_phase) options_.on_phase(phase);
     const auto t0 = std::chrono::steady_clock::now();
     auto result = f();
     report_.seconds[phase] +=
@@ -52,6 +53,7 @@ class Timer {
 
  private:
   Report& report_;
+  const Options& options_;
 };
 
 void skip_rest(Report& rep, const std::string& reason) {
@@ -70,7 +72,7 @@ Report run(const MeshView& mesh, const Plc* domain, Options o) {
   rep.tets = mesh.tets.size();
   rep.has_domain = domain != nullptr;
   rep.options = o;
-  Timer time(rep);
+  Timer time(rep, o);
   rep.checks.push_back(check_indices(mesh, o));
   rep.checks.push_back(check_coordinates(mesh, o));
   if (!rep.ok()) {

@@ -52,6 +52,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -91,6 +92,9 @@ struct Options {
   // validity.overlap first tries the degree argument (degree.cpp), which looks at the
   // boundary surface only; off, every pair of tets with meeting boxes is tested.
   bool overlap_by_degree = true;
+  // Called as each phase starts ("orientation", "topology", "overlap", ...): a progress
+  // line. May be empty; not called from worker threads.
+  std::function<void(std::string_view phase)> on_phase;
 };
 
 // Pass: no violation. Warn: no failure, but something was flagged or not judged (reason

@@ -63,11 +63,8 @@ class Refiner {
       refine_tet(e.t);
       // An encroached element split on t's behalf may leave t alive: it waits again.
       if (m_.dt.num_points() > before && WorkQueue::current(s, e)) queue_.push(e);
-      if (o_.progress && (++steps_ & 0x3FFF) == 0)
-        std::fprintf(stderr, "\rrefine: %zu vertices, %zu queued   ", m_.dt.num_points(),
-                     queue_.pending());
+      if (o_.on_progress && (++steps_ & 0x3FF) == 0) o_.on_progress(m_.dt.num_points());
     }
-    if (o_.progress) std::fprintf(stderr, "\n");
     abandon_missing();
     refused_.seal();
     res_.leftovers = collect_leftovers(m_, o_.ratio, refused_, res_.stop_reason);

@@ -53,6 +53,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,7 +70,8 @@ struct RefineOptions {
   bool audit = false;
   std::size_t max_vertices = 0;       // 0: derived cap
   double d = 0;                       // paper §2.1 d (for the derived cap and the audit)
-  bool progress = false;              // a progress line on stderr
+  // Called every 1024 refinement steps with the vertex count (a progress line); may be empty.
+  std::function<void(std::size_t vertices)> on_progress;
   bool admissible = true;             // false: the audit records its first failure
                                       // (audit_note) instead of stopping: Lemma 1 is
                                       // not expected to hold outside the theory; and
