@@ -20,6 +20,7 @@
 #include "app/exit_codes.hpp"
 #include "app/order_check.hpp"
 #include "app/parallel.hpp"
+#include "app/partitioned_output.hpp"
 #include "app/pipeline.hpp"
 #include "app/progress.hpp"
 #include "app/summary.hpp"
@@ -162,9 +163,10 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   timer.lap("initial");
   progress.phase("refine");
   double t_before = 0;  // parallel runs: the phases before rank 0's completion
+  VertexOwners owners;  // parallel runs: who made each vertex (PREFIX.pvtu)
   std::optional<refine::RefineResult> refined =
       world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.inject_latency_us,
-                                            args.seed, summary, timer, t_before)
+                                            args.seed, summary, timer, t_before, owners)
                        : refine::refine(vm, opt);
   if (!refined) return kExitOk;  // not rank 0: rank 0 writes, checks and decides the code
   const refine::RefineResult& rr = *refined;
@@ -224,6 +226,14 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
   }
   progress.phase("write");
   write_outputs(mesh, args.prefix, formats, timer, summary);
+  if (world().size > 1 && std::find(formats.begin(), formats.end(), io::MeshFormat::Vtu) != formats.end()) {
+    // One piece per rank, the owner as a cell field (app/partitioned_output.hpp).
+    nlohmann::json written = summary.get("written");
+    for (const std::string& p : write_partitioned_vtu(mesh, tet_owners(mesh, owners), owners.parts, args.prefix))
+      written.push_back(p);
+    summary.set("written", written);
+    timer.lap("write");
+  }
 
   if (args.check) {
     check::Options co;

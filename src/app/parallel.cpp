@@ -110,7 +110,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::size_t initial_tets,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
-                                                       PhaseTimer& timer, double& seconds) {
+                                                       PhaseTimer& timer, double& seconds,
+                                                       VertexOwners& owners) {
   const World w = world();
   // M_o: the same on every rank.
   const refine::RefineResult coarse =
@@ -126,10 +127,10 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   const bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
   std::vector<Point> points;
   std::vector<par::RankFigures> figures;
+  par::Partition part;
   if (distribute) {
     try {
-      const par::Partition part =
-          par::partition_tets(vm.dt.store(), vm.inside, static_cast<std::uint32_t>(w.size), seed);
+      part = par::partition_tets(vm.dt.store(), vm.inside, static_cast<std::uint32_t>(w.size), seed);
       par::RankResult mine;
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
@@ -154,6 +155,21 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     }
   }
   if (w.rank != 0) return std::nullopt;
+  owners.parts = w.size;
+  if (distribute) {
+    std::size_t next = 0;
+    for (std::size_t r = 0; r < figures.size(); ++r)
+      for (std::uint64_t i = 0; i < figures[r].points && next < points.size(); ++i)
+        owners.committed.emplace(points[next++], static_cast<std::uint32_t>(r));
+    const TetStore& s = vm.dt.store();
+    for (TetId t = 0; t < part.part.size(); ++t) {
+      if (part.part[t] == par::kNoPart || s.vertex(t, 3) >= kFirstSpecialVertex) continue;  // ghosts too
+      for (int k = 0; k < 4; ++k) {
+        const auto [it, fresh] = owners.initial.emplace(vm.dt.point(s.vertex(t, k)), part.part[t]);
+        if (!fresh) it->second = std::min(it->second, part.part[t]);
+      }
+    }
+  }
   const std::size_t added = par::absorb(vm, points);
   seconds += timer.lap("absorb");
   nlohmann::json ranks = nlohmann::json::array();

@@ -15,6 +15,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "app/partitioned_output.hpp"
 #include "app/summary.hpp"
 #include "refine/seq_refinement.hpp"
 
@@ -47,13 +48,15 @@ class RunAbandoned : public std::runtime_error {
 // the completion, with the parallel figures in the summary (object "parallel") and on
 // stderr; elsewhere nullopt (rank 0 finishes the run). `seconds` gets the wall time of the
 // phases before the completion (coarse, parallel, gather, absorb). `latency_us` > 0: every
-// message of the parallel phase is held that long before it is delivered.
+// message of the parallel phase is held that long before it is delivered. `owners` gets,
+// on rank 0, who made each vertex (app/partitioned_output.hpp).
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
-                                                       PhaseTimer& timer, double& seconds);
+                                                       PhaseTimer& timer, double& seconds,
+                                                       VertexOwners& owners);
 
 // The exit code of the run, on every rank (`code` without mpirun): the code the checkpoint
 // fixed; else, past the checkpoint, rank 0's; else (no checkpoint yet: a command without

@@ -24,6 +24,12 @@ class Summary {
       }
     items_.emplace_back(key, nlohmann::json(std::forward<T>(value)));
   }
+  // The value under `key` (null if none).
+  nlohmann::json get(const std::string& key) const {
+    for (const auto& kv : items_)
+      if (kv.first == key) return kv.second;
+    return nullptr;
+  }
   nlohmann::json to_json() const;
   std::string to_text() const;
   void print(bool json) const;  // to stdout

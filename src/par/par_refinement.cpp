@@ -44,6 +44,7 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   f.sleeps = idle.sleeps();
   f.final_tets = actor.submesh().real_tets();
   out.points = actor.committed_points();
+  out.figures.points = out.points.size();
   return out;
 }
 

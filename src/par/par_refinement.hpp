@@ -35,6 +35,7 @@ struct RankFigures {
   std::uint64_t messages_sent = 0, messages_received = 0, bytes_sent = 0;
   std::uint64_t empty_polls = 0, sleeps = 0;
   std::uint64_t start_tets = 0, final_tets = 0;  // real tets of the submesh
+  std::uint64_t points = 0;                     // points committed (RankResult::points)
 };
 
 struct RankResult {
