@@ -123,7 +123,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   return c;
 }
 
-int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
+int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* mesh_out) {
   PhaseTimer timer;
   check_range(plc);
   const auto formats = parse_formats(args.formats);
@@ -216,7 +216,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
                                   "tetrahedralization were refused (see unsplit)");
     if (code == kExitOk) code = kExitNotGuaranteed;
   }
-  write_outputs(mesh, args.prefix, formats, timer, summary);
+  if (!args.prefix.empty()) write_outputs(mesh, args.prefix, formats, timer, summary);
 
   if (args.check) {
     check::Options co;
@@ -259,7 +259,30 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
     summary.set("check", "skipped (--no-check)");
   }
   finish_summary(timer, summary);
+  if (mesh_out) *mesh_out = std::move(mesh);
   return code;
+}
+
+int mesh_plc_reported(const Plc& plc, const MeshArgs& args, Summary& summary,
+                      std::string& failure, MeshData* mesh_out) {
+  failure.clear();
+  try {
+    return mesh_plc(plc, args, summary, mesh_out);
+  } catch (const refine::RefineError& e) {
+    summary.set("error", e.what());
+    failure = e.what();
+    return kExitInternal;
+  } catch (const surface::SurfaceCapError& e) {
+    // A resource limit, not a bug: nothing is written, and the run says why (exit 3).
+    summary.set("quality", "NOT GUARANTEED: stopped before meshing, nothing written");
+    summary.set("stop_reason", e.what());
+    failure = std::string("stopped: ") + e.what();
+    return kExitNotGuaranteed;
+  } catch (const surface::SurfaceError& e) {
+    summary.set("error", e.what());
+    failure = e.what();
+    return kExitInternal;
+  }
 }
 
 namespace {
@@ -269,28 +292,10 @@ int mesh_and_report(const MeshArgs& args) {
   Summary summary;
   summary.set("command", "mesh");
   const Plc plc = io::read_domain(args.domain);
-  int code;
-  try {
-    code = mesh_plc(plc, args, summary);
-  } catch (const refine::RefineError& e) {
-    summary.set("error", e.what());
-    summary.print(args.json);
-    std::cerr << "pdr: " << e.what() << "\n";
-    return kExitInternal;
-  } catch (const surface::SurfaceCapError& e) {
-    // A resource limit, not a bug: nothing is written, and the run says why (exit 3).
-    summary.set("quality", "NOT GUARANTEED: stopped before meshing, nothing written");
-    summary.set("stop_reason", e.what());
-    summary.print(args.json);
-    std::cerr << "pdr: stopped: " << e.what() << "\n";
-    return kExitNotGuaranteed;
-  } catch (const surface::SurfaceError& e) {
-    summary.set("error", e.what());
-    summary.print(args.json);
-    std::cerr << "pdr: " << e.what() << "\n";
-    return kExitInternal;
-  }
+  std::string failure;
+  const int code = mesh_plc_reported(plc, args, summary, failure);
   summary.print(args.json);
+  if (!failure.empty()) std::cerr << "pdr: " << failure << "\n";
   return code;
 }
 
