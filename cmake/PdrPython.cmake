@@ -13,7 +13,7 @@
 # the module: lib/python3.X/ and the last folder of the interpreter's own site-packages
 # path (dist-packages on Debian), so that the default prefix /usr/local is on sys.path.
 set(PDR_PYTHON AUTO CACHE STRING
-  "Build the Python module pdr: ON, OFF, or AUTO (when pybind11 and the Python 3 headers are installed)")
+  "Build the Python module pdr: ON, OFF, or AUTO (when pybind11 and the Python headers are found)")
 set(pdr_build_python OFF)
 
 if(PDR_SANITIZE OR PDR_FUZZ)

@@ -86,7 +86,7 @@ std::vector<std::uint32_t> to_polygon(const py::handle& obj, std::size_t f, std:
     if (!is_index(item))
       throw py::type_error(where + ": polygon " + std::to_string(k + 1) + " has " +
                            std::string(py::repr(item)) + ", not an integer vertex index");
-    const long long v = py::reinterpret_steal<py::int_>(PyNumber_Index(item.ptr())).cast<long long>();
+    const auto v = py::int_(py::reinterpret_borrow<py::object>(item)).cast<long long>();
     if (v < 0 || v > std::numeric_limits<std::uint32_t>::max())
       throw InputError(kArraySource, f + 1,
                        "index in range: polygon " + std::to_string(k + 1) +

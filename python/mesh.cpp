@@ -36,13 +36,15 @@ std::string status_of(int code) {
 // Why a run did not end ok, from the summary's own entries.
 std::string reason_of(int code, const py::dict& summary, const std::string& failure) {
   if (code == app::kExitOk) return "";
-  if (code == app::kExitViolations)
-    return "the checker found violations: " +
-           std::string(py::str(summary.contains("check_failed") ? summary["check_failed"]
-                                                                : py::str("?")));
+  if (code == app::kExitViolations) {
+    const py::object ids = summary.contains("check_failed") ? py::object(summary["check_failed"])
+                                                            : py::object(py::list());
+    return "the checker found violations: " + std::string(py::str(ids));
+  }
   std::string reason;
   for (const char* key : {"quality", "conformity"})
-    if (summary.contains(key)) reason += (reason.empty() ? "" : "; ") + py::str(summary[key]).cast<std::string>();
+    if (summary.contains(key))
+      reason += (reason.empty() ? "" : "; ") + std::string(py::str(summary[key]));
   return reason.empty() ? failure : reason;
 }
 

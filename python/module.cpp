@@ -43,8 +43,8 @@ void translate(std::exception_ptr failure) {
   }
 }
 
-constexpr const char* kModuleDoc = R"(pdr: guaranteed-quality Delaunay refinement of polyhedral domains, and an exact
-checker for tetrahedral meshes, on numpy arrays.
+constexpr const char* kModuleDoc = R"(pdr: guaranteed-quality Delaunay refinement of
+polyhedral domains, and an exact checker for tetrahedral meshes, on numpy arrays.
 
     import numpy as np, pdr
     m = pdr.mesh(points, facets, ratio=2.0, max_volume=0.05)   # N x 3, list of polygons
@@ -67,14 +67,12 @@ file and line) for bad input; for arrays the file is "<arrays>" and a line is th
 position of a facet in facets. OSError when a file cannot be read or written,
 pdr.CapacityError and pdr.InternalError (RuntimeErrors) as exit 3 and 4 of `pdr mesh`.)";
 
-constexpr const char* kMeshDoc = R"(mesh(points, facets=None, holes=None, ratio=2.0, max_volume=None, size=None,
-     check=True, audit=False, seed=..., max_vertices=0) -> dict
-
-`pdr mesh` on a domain: points (N x 3), facets and holes (see the module's doc), or a
-domain file as the only positional argument (.poly, .smesh, .off, .stl, .ply, .mesh,
-.msh). Every tet gets radius-edge ratio < ratio; max_volume and size bound tet volumes
-and circumradii. check runs the exact checker against the domain and the
-order-independence check; audit checks Lemma 1 after every insertion.
+// pybind11 writes each function's signature above its docstring.
+constexpr const char* kMeshDoc = R"(`pdr mesh` on a domain: points (N x 3), facets and holes
+(see the module's doc), or a domain file as the only positional argument (.poly, .smesh,
+.off, .stl, .ply, .mesh, .msh). Every tet gets radius-edge ratio < ratio; max_volume and
+size bound tet volumes and circumradii. check runs the exact checker against the domain and
+the order-independence check; audit checks Lemma 1 after every insertion.
 
 Returns {"points", "tets", "faces", "face_markers" (the facets' markers of the faces),
 "summary" (what `pdr mesh --json` prints, less "written": nothing is written),
@@ -84,39 +82,30 @@ unmet), "reason" (why not ok, "" when ok), "leftovers" (the tets left with ratio
 each with its reason; the first 50)}. A surface mesh that reaches the vertex cap returns
 no tets with status "not_guaranteed".)";
 
-constexpr const char* kCheckDoc = R"(check(points, tets=None, faces=None, domain=None, ratio=2.0, h=None, max_reported=20,
-      threads=2) -> dict
-
-`pdr check --json` on a mesh: points (N x 3), tets (M x 4), optionally its boundary faces
-(K x 3); or a mesh file or prefix as the only positional argument (PREFIX for
-PREFIX.node + PREFIX.ele, or .ele/.node/.msh/.mesh/.vtu). domain: a path, (points,
-facets[, holes]), or a domain dict from pdr.read; with it the conformity and
-encroachment checks run. ratio: require radius-edge ratio < ratio (None: not checked);
-h: require every edge longer than h.
+constexpr const char* kCheckDoc = R"(`pdr check --json` on a mesh: points (N x 3), tets (M x
+4), optionally its boundary faces (K x 3); or a mesh file or prefix as the only positional
+argument (PREFIX for PREFIX.node + PREFIX.ele, or .ele/.node/.msh/.mesh/.vtu). domain: a
+path, (points, facets[, holes]), or a domain dict from pdr.read; with it the conformity and
+encroachment checks run. ratio: require radius-edge ratio < ratio (None: not checked); h:
+require every edge longer than h.
 
 Returns the report (docs/check-report-schema.md): "ok", "schema_version", "mesh",
 "options", "checks" (each with "id", "status", "violations", "findings"), "input",
 "seconds". Indices out of range, flipped tets and the like are failed checks, not
 exceptions.)";
 
-constexpr const char* kReadDoc = R"(read(path, kind="auto") -> dict
-
-Reads a mesh (kind "mesh": {"kind", "source", "points", "tets", "faces",
-"face_markers", "point_markers", "tet_regions", "skipped_elements",
+constexpr const char* kReadDoc = R"(Reads a mesh (kind "mesh": {"kind", "source", "points",
+"tets", "faces", "face_markers", "point_markers", "tet_regions", "skipped_elements",
 "dropped_high_order_nodes"}) or a domain (kind "domain": {"kind", "source", "points",
-"facets", "holes", "regions", "point_markers"}). "auto" decides by the name: .poly,
-.smesh, .off, .stl, .ply are domains; .node is a mesh when PREFIX.ele exists, else a
-point set domain; .msh and .mesh are meshes unless they hold no tet; else a mesh (.ele,
-.vtu, PREFIX).)";
+"facets", "holes", "regions", "point_markers"}). "auto" decides by the name: .poly, .smesh,
+.off, .stl, .ply are domains; .node is a mesh when PREFIX.ele exists, else a point set
+domain; .msh and .mesh are meshes unless they hold no tet; else a mesh (.ele, .vtu, PREFIX).)";
 
-constexpr const char* kWriteDoc = R"(write(path_or_prefix, points, tets, faces=None, formats=None, face_markers=None)
-      -> list
-
-Writes a mesh as `pdr mesh` does: each file atomically, the folder created. formats: a
-list (or a comma-separated string) of "node", "vtu", "msh", "mesh"; then path_or_prefix
-is a prefix. Without formats, a path ending in .node/.ele, .vtu, .msh or .mesh writes
-that format, and a bare prefix gets PREFIX.{node,ele,face} and PREFIX.vtu. Returns the
-paths written.)";
+constexpr const char* kWriteDoc = R"(Writes a mesh as `pdr mesh` does: each file atomically,
+the folder created. formats: a list (or a comma-separated string) of "node", "vtu", "msh",
+"mesh"; then path_or_prefix is a prefix. Without formats, a path ending in .node/.ele, .vtu,
+.msh or .mesh writes that format, and a bare prefix gets PREFIX.{node,ele,face} and
+PREFIX.vtu. Returns the paths written.)";
 
 }  // namespace
 

@@ -61,7 +61,8 @@ def test_open_boundary_is_input_error():
 
 
 @pytest.mark.parametrize("call, message", [
-    (lambda: pdr.mesh(CUBE_POINTS[:, :2], CUBE_FACETS), r"points: expected an array of shape \(N, 3\)"),
+    (lambda: pdr.mesh(CUBE_POINTS[:, :2], CUBE_FACETS),
+     r"points: expected an array of shape \(N, 3\)"),
     (lambda: pdr.mesh(CUBE_POINTS, CUBE_FACETS, ratio=0.5), "ratio"),
     (lambda: pdr.mesh(CUBE_POINTS, CUBE_FACETS, max_volume=-1.0), "max_volume"),
     (lambda: pdr.check(CUBE_POINTS, [[0, 1, 2, 4.0]]), "tets: expected integer"),

@@ -128,3 +128,12 @@ def test_bound_not_met_is_exit_3(tmp_path, pdr_cli):
     assert "NOT GUARANTEED" in m["reason"]
     assert json.loads(cli.stdout)["quality"] in m["reason"]
     assert isinstance(m["leftovers"], list)
+
+
+def test_surface_cap_returns_no_mesh():
+    # The cap reached while meshing the surface: exit 3 of pdr mesh, nothing meshed.
+    m = pdr.mesh(DATA_DIR / "cube-in-cube.poly", max_vertices=20)
+    assert (m["status"], m["exit_code"]) == ("not_guaranteed", 3)
+    assert m["tets"].shape == (0, 4) and m["points"].shape == (0, 3)
+    assert m["summary"]["stop_reason"].startswith("surface.cap:")
+    assert "stopped before meshing" in m["reason"]
