@@ -124,7 +124,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   return c;
 }
 
-int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
+int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* mesh_out) {
   PhaseTimer timer;
   Progress progress(Progress::wanted(args.json) && world().size == 1);
   progress.phase("analyze");
@@ -224,9 +224,12 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
                                   "tetrahedralization were refused (see unsplit)");
     if (code == kExitOk) code = kExitNotGuaranteed;
   }
-  progress.phase("write");
-  write_outputs(mesh, args.prefix, formats, timer, summary);
-  if (world().size > 1 && std::find(formats.begin(), formats.end(), io::MeshFormat::Vtu) != formats.end()) {
+  if (!args.prefix.empty()) {
+    progress.phase("write");
+    write_outputs(mesh, args.prefix, formats, timer, summary);
+  }
+  if (!args.prefix.empty() && world().size > 1 &&
+      std::find(formats.begin(), formats.end(), io::MeshFormat::Vtu) != formats.end()) {
     // One piece per rank, the owner as a cell field (app/partitioned_output.hpp).
     nlohmann::json written = summary.get("written");
     for (const std::string& p : write_partitioned_vtu(mesh, tet_owners(mesh, owners), owners.parts, args.prefix))
@@ -279,7 +282,30 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary) {
     summary.set("check", "skipped (--no-check)");
   }
   finish_summary(timer, summary);
+  if (mesh_out) *mesh_out = std::move(mesh);
   return code;
+}
+
+int mesh_plc_reported(const Plc& plc, const MeshArgs& args, Summary& summary,
+                      std::string& failure, MeshData* mesh_out) {
+  failure.clear();
+  try {
+    return mesh_plc(plc, args, summary, mesh_out);
+  } catch (const refine::RefineError& e) {
+    summary.set("error", e.what());
+    failure = e.what();
+    return kExitInternal;
+  } catch (const surface::SurfaceCapError& e) {
+    // A resource limit, not a bug: nothing is written, and the run says why (exit 3).
+    summary.set("quality", "NOT GUARANTEED: stopped before meshing, nothing written");
+    summary.set("stop_reason", e.what());
+    failure = std::string("stopped: ") + e.what();
+    return kExitNotGuaranteed;
+  } catch (const surface::SurfaceError& e) {
+    summary.set("error", e.what());
+    failure = e.what();
+    return kExitInternal;
+  }
 }
 
 namespace {
@@ -289,28 +315,10 @@ int mesh_and_report(const MeshArgs& args) {
   Summary summary;
   summary.set("command", "mesh");
   const Plc plc = io::read_domain(args.domain);
-  int code;
-  try {
-    code = mesh_plc(plc, args, summary);
-  } catch (const refine::RefineError& e) {
-    summary.set("error", e.what());
-    summary.print(args.json);
-    std::cerr << "pdr: " << e.what() << "\n";
-    return kExitInternal;
-  } catch (const surface::SurfaceCapError& e) {
-    // A resource limit, not a bug: nothing is written, and the run says why (exit 3).
-    summary.set("quality", "NOT GUARANTEED: stopped before meshing, nothing written");
-    summary.set("stop_reason", e.what());
-    summary.print(args.json);
-    std::cerr << "pdr: stopped: " << e.what() << "\n";
-    return kExitNotGuaranteed;
-  } catch (const surface::SurfaceError& e) {
-    summary.set("error", e.what());
-    summary.print(args.json);
-    std::cerr << "pdr: " << e.what() << "\n";
-    return kExitInternal;
-  }
+  std::string failure;
+  const int code = mesh_plc_reported(plc, args, summary, failure);
   summary.print(args.json);
+  if (!failure.empty()) std::cerr << "pdr: " << failure << "\n";
   return code;
 }
 

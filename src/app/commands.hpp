@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/summary.hpp"
+#include "mesh/mesh_data.hpp"
 #include "mesh/plc.hpp"
 #include "refine/seq_refinement.hpp"
 
@@ -53,9 +54,18 @@ struct MeshArgs {
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
 int run_mesh(const MeshArgs& args);
-// The mesher on a PLC (shared with the default job); fills `summary`, returns an exit
-// code; throws InputError, RefineError, SurfaceError.
-int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary);
+// The mesher on a PLC (shared with the default job and the Python module); fills
+// `summary`, returns an exit code; throws InputError, RefineError, SurfaceError. Writes the
+// mesh under args.prefix, or nowhere when args.prefix is empty; `mesh_out`, when given,
+// receives the mesh (the in-domain tets and the boundary faces, as written).
+int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary,
+             MeshData* mesh_out = nullptr);
+// mesh_plc with the failures that `pdr mesh` reports in its summary turned into exit codes:
+// RefineError and SurfaceError exit 4 ("error"), SurfaceCapError exit 3 (nothing meshed:
+// "quality", "stop_reason"). `failure` gets what the command prints on stderr after "pdr: "
+// (empty when nothing failed). Other exceptions (InputError, ...) propagate.
+int mesh_plc_reported(const Plc& plc, const MeshArgs& args, Summary& summary,
+                      std::string& failure, MeshData* mesh_out = nullptr);
 
 struct DefaultArgs {
   std::string prefix = "out/default";
