@@ -54,6 +54,27 @@ refine::RefineOptions coarse_options(const refine::RefineOptions& opt, double vo
   return c;
 }
 
+// The paper's Table 1 for one rank (docs/parallel.md: how each figure is measured).
+double latency_tolerance(const par::InsertionStats& s) {
+  const double masked = s.masked_local_s + s.masked_distributed_s;
+  return masked + s.setback_s > 0 ? masked / (masked + s.setback_s) : 1.0;
+}
+
+nlohmann::json table1_json(const par::RankFigures& f) {
+  const auto& s = f.steps;
+  return nlohmann::json{{"execution_seconds", f.seconds},
+                        {"completed_cavity_seconds", {{"local", s.completed_local_s},
+                                                      {"distributed", s.completed_distributed_s}}},
+                        {"masked_seconds", {{"local", s.masked_local_s},
+                                            {"distributed", s.masked_distributed_s}}},
+                        {"setback_seconds", s.setback_s},
+                        {"latency_tolerance", latency_tolerance(s)},
+                        {"served_seconds", s.served_s},
+                        {"other_seconds", s.other_s},
+                        {"poll_seconds", s.poll_s},
+                        {"poll_excess_seconds", s.poll_excess_s}};
+}
+
 nlohmann::json figures_json(int rank, const par::RankFigures& f) {
   const auto& s = f.steps;
   return nlohmann::json{
@@ -78,7 +99,8 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
       {"empty_polls", f.empty_polls},
       {"sleeps", f.sleeps},
       {"start_tets", f.start_tets},
-      {"final_tets", f.final_tets}};
+      {"final_tets", f.final_tets},
+      {"table1", table1_json(f)}};
 }
 
 void print_table(const std::vector<par::RankFigures>& all) {
@@ -96,6 +118,22 @@ void print_table(const std::vector<par::RankFigures>& all) {
                  static_cast<unsigned long long>(f.messages_sent),
                  static_cast<unsigned long long>(f.final_tets));
   }
+  // Table 1 (seconds), each rank and the slowest one.
+  std::fprintf(stderr, "table 1:        %-5s %8s %9s %9s %9s %9s %8s %8s %8s %8s\n", "rank", "exec",
+               "cav.local", "cav.dist", "mask.loc", "mask.dist", "setback", "lat.tol", "poll",
+               "excess");
+  std::size_t worst = 0;
+  for (std::size_t r = 0; r < all.size(); ++r)
+    if (all[r].seconds > all[worst].seconds) worst = r;
+  auto row = [&](const std::string& name, const par::RankFigures& f) {
+    const auto& s = f.steps;
+    std::fprintf(stderr, "table 1:        %-5s %8.3f %9.3f %9.3f %9.3f %9.3f %8.3f %7.1f%% %8.3f %8.3f\n",
+                 name.c_str(), f.seconds, s.completed_local_s, s.completed_distributed_s,
+                 s.masked_local_s, s.masked_distributed_s, s.setback_s,
+                 100 * latency_tolerance(s), s.poll_s, s.poll_excess_s);
+  };
+  for (std::size_t r = 0; r < all.size(); ++r) row(std::to_string(r), all[r]);
+  if (!all.empty()) row("worst", all[worst]);
 }
 
 }  // namespace
@@ -178,7 +216,12 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     ranks.push_back(figures_json(static_cast<int>(r), figures[r]));
     slowest = std::max(slowest, figures[r].seconds);
   }
-  summary.set("parallel", nlohmann::json{{"schema_version", 1},
+  std::size_t worst = 0;
+  for (std::size_t r = 0; r < figures.size(); ++r)
+    if (figures[r].seconds > figures[worst].seconds) worst = r;
+  summary.set("parallel", nlohmann::json{{"schema_version", 2},
+                                         {"worst_rank", figures.empty() ? nlohmann::json(nullptr)
+                                                                        : nlohmann::json(worst)},
                                          {"ranks", w.size},
                                          {"injected_latency_us", latency_us},
                                          {"distributed", distribute},

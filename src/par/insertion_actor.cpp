@@ -2,10 +2,14 @@
 #include "par/insertion_actor.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <iterator>
 
 namespace pdr::par {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 enum class Type : std::uint8_t { Fetch = 1, Tets = 2, Refuse = 3, Relink = 4, Point = 5 };
 
@@ -41,7 +45,32 @@ void InsertionActor::send(int to, Bytes b) { t_.send(to, std::move(b)); }
 
 bool InsertionActor::step() {
   ++tick_;
-  worked_ = t_.poll([&](int from, std::span<const std::byte> m) { receive(from, m); }, 16) > 0;
+  // Table 1's clocks: a message's handling is charged by its kind (a reply to this rank's
+  // search to the search; a request served while that search waits is masked); the rest
+  // of the poll is polling.
+  double handled = 0;
+  const auto p0 = Clock::now();
+  const std::size_t got = t_.poll(
+      [&](int from, std::span<const std::byte> m) {
+        const bool waiting_now = waiting();
+        const auto kind = m.empty() ? Type{} : static_cast<Type>(std::to_integer<std::uint8_t>(m[0]));
+        const bool reply = kind == Type::Tets || kind == Type::Refuse;
+        const auto h0 = Clock::now();
+        receive(from, m);
+        const double d = since(h0);
+        handled += d;
+        if (reply)
+          charge_search(d);
+        else if (waiting_now)
+          stats_.masked_distributed_s += d;
+        else
+          stats_.served_s += d;
+      },
+      16);
+  worked_ = got > 0;
+  const double polling = since(p0) - handled;
+  stats_.poll_s += polling;
+  if (got == 0 && !idle() && !waiting()) stats_.poll_excess_s += polling;
   for (std::size_t i = 0; i < delayed_.size();)
     if (delayed_[i].wake <= tick_) {
       ready_.push_back(delayed_[i]);
@@ -50,20 +79,27 @@ bool InsertionActor::step() {
     } else {
       ++i;
     }
+  const auto w0 = Clock::now();
   if (active_ && again_) {
     again_ = false;
     round();
     worked_ = true;
+    charge_search(since(w0));
   } else if (!active_ && !ready_.empty()) {
     const Waiting w = ready_.front();
     ready_.pop_front();
     worked_ = true;
     if (!start(w)) ++stats_.gone;
+    if (active_ || end_ != End::None)
+      charge_search(since(w0));
+    else
+      stats_.other_s += since(w0);  // a tet gone, a point passed on
   } else if (active_ && !again_ && !ready_.empty()) {  // waiting for replies: local steps
     const Waiting w = ready_.front();
     ready_.pop_front();
     worked_ = true;
     local_step(w);
+    stats_.masked_local_s += since(w0);
   }
   if (worked_) td_.activity();
   return td_.step(idle());
@@ -107,6 +143,20 @@ bool InsertionActor::complete(const Cavity& c, Gid tet) {
     for (const TetId t : made_) want(t);
   }
   return true;
+}
+
+void InsertionActor::charge_search(double seconds) {
+  search_s_ += seconds;
+  if (end_ == End::None) return;
+  if (end_ == End::Commit)
+    (search_distributed_ ? stats_.completed_distributed_s : stats_.completed_local_s) += search_s_;
+  else if (end_ == End::Setback)
+    stats_.setback_s += search_s_;
+  else
+    stats_.other_s += search_s_;
+  search_s_ = 0;
+  search_distributed_ = false;
+  end_ = End::None;
 }
 
 bool InsertionActor::start(Waiting w) {
@@ -167,8 +217,8 @@ void InsertionActor::round() {
     finish();
     if (gone)
       ++stats_.gone;
-    else
-      complete(rc.cavity, s_.w.tet);
+    else if (complete(rc.cavity, s_.w.tet))
+      end_ = End::Commit;
     return;
   }
   if (rc.fetch.count(sub_.id()) != 0) {  // tets on their way here: look again later
@@ -188,6 +238,7 @@ void InsertionActor::round() {
   s_.walk = rc.walk;
   s_.refused = false;
   s_.outstanding = static_cast<int>(rc.fetch.size());
+  search_distributed_ = search_distributed_ || !rc.fetch.empty();
   for (const auto& [owner, sides] : rc.fetch) {
     WireWriter m;
     m.put(Type::Fetch).put(sub_.id()).put(s_.id).put(s_.w.p).put<std::uint8_t>(rc.walk);
@@ -197,6 +248,7 @@ void InsertionActor::round() {
 }
 
 void InsertionActor::finish() {
+  end_ = End::Other;  // a commit or a setback says so after
   active_ = false;
   again_ = false;
   locked_.clear();
@@ -212,6 +264,7 @@ void InsertionActor::setback() {
   w.wake = tick_ + 1 + rng_() % span;
   delayed_.push_back(w);
   finish();
+  end_ = End::Setback;
 }
 
 void InsertionActor::reply_in(bool refused) {

@@ -64,6 +64,14 @@ struct InsertionStats {
   std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
                                          // tets that had left when their turn came
   std::uint64_t local_while_waiting = 0;  // steps committed while a search waited
+  // The paper's Table 1, in seconds of this rank (docs/parallel.md says how each is
+  // measured): searches that committed, without and with other ranks; work done while a
+  // search of this rank waited for replies, its own steps and requests served; searches
+  // that ended in a setback; polls that found nothing, and those while work was queued.
+  double completed_local_s = 0, completed_distributed_s = 0;
+  double masked_local_s = 0, masked_distributed_s = 0;
+  double setback_s = 0, served_s = 0, other_s = 0;
+  double poll_s = 0, poll_excess_s = 0;
 };
 
 class InsertionActor {
@@ -124,6 +132,9 @@ class InsertionActor {
   // A complete cavity at this rank: the rules accept it (commit, queue the new tets they
   // want) or defer it (mark the tet `tet`).
   bool complete(const Cavity& c, Gid tet);  // true: committed
+  // Adds `seconds` to the active search's time; when it has ended (end_), moves its time
+  // to the bucket of its outcome.
+  void charge_search(double seconds);
 
   Transport& t_;
   Submesh sub_;
@@ -143,6 +154,12 @@ class InsertionActor {
   InsertionStats stats_;
   StepRules* rules_ = nullptr;
   std::vector<Point> committed_;
+  // Table 1's clocks: the active search's time so far, whether it asked other ranks, and
+  // how it ended (set by finish(), setback() and a commit in round()).
+  enum class End { None, Commit, Setback, Other };
+  double search_s_ = 0;
+  bool search_distributed_ = false;
+  End end_ = End::None;
 };
 
 }  // namespace pdr::par
