@@ -4,7 +4,8 @@
 #   scripts/install-deps.sh --tests  also the test-only dependencies (RapidCheck, GoogleTest,
 #                                    clang and its libFuzzer runtime for the fuzz build,
 #                                    TetGen and Gmsh to produce meshes for the checker tests,
-#                                    meshio to write and read files in the io tests)
+#                                    meshio to write and read files in the io tests, spin to
+#                                    model-check the parallel protocol)
 #   scripts/install-deps.sh --bench  also the benchmark-only dependencies (CGAL, TetGen)
 set -euo pipefail
 
@@ -13,7 +14,7 @@ pkgs=(build-essential cmake ninja-build pkg-config libgmp-dev libboost-dev libcl
 for arg in "$@"; do
   case "$arg" in
     --tests) pkgs+=(librapidcheck-dev libgtest-dev tetgen gmsh clang libclang-rt-14-dev
-                     python3-meshio python3-numpy) ;;
+                     python3-meshio python3-numpy spin) ;;
     --bench) pkgs+=(libcgal-dev tetgen) ;;
     *) echo "install-deps.sh: unknown option '$arg' (use --tests or --bench)" >&2; exit 2 ;;
   esac
