@@ -61,11 +61,13 @@
  * Mutation -DCAVITY_LOCKING_ONLY: the root fetches and locks only its cavity, reading the
  * ring from its proxies; spin must report violations of (1), of both kinds.
  *
- * Sizes (tests/proofs/spin_protocol.sh runs each exhaustively, about a second to a few
- * seconds per run): 2 ranks x 2 insertions with one retry; 2 ranks on an 8-tet ring split
- * 5 + 3, where a rank commits locally while its search waits (on the 6-tet ring no closure
- * is ever free beside a waiting search); 3 ranks, two of them searching, without retries
- * (a setback drops the point: with retries 3 ranks exceed ten million states).
+ * Sizes (tests/proofs/spin_protocol.sh runs each exhaustively, 0.1 to 1.2 million states,
+ * a few seconds each): safety on 2 ranks x 2 insertions with one retry; on 2 ranks on an
+ * 8-tet ring split 5 + 3, where a rank commits locally while its search waits (on the
+ * 6-tet ring no closure is ever free beside a waiting search); and on 3 ranks, two of them
+ * searching, without retries (a setback drops the point: with retries 3 ranks exceed ten
+ * million states). Liveness on 2 ranks x 1 insertion with two retries, and on the 8-tet
+ * ring.
  */
 
 #ifndef P

@@ -5,7 +5,9 @@
 #                                         three configurations: 2 ranks x 2 insertions with a
 #                                         retry; 2 ranks on an 8-tet ring, where a rank commits
 #                                         while its search waits; 3 ranks (relink notices)
-#   spin_protocol.sh liveness MODEL DIR   `ltl terminates` under weak fairness (pan -a -f)
+#   spin_protocol.sh liveness MODEL DIR   `ltl terminates` under weak fairness (pan -a -f):
+#                                         2 ranks x 1 insertion with two retries; the 8-tet
+#                                         ring above
 #   spin_protocol.sh mutation MODEL DIR   with -DCAVITY_LOCKING_ONLY spin reports violations,
 #                                         every one of property (1), both kinds present:
 #                                         Fig. 3/4 (hit) and overlapping closures (spoil)
@@ -60,7 +62,7 @@ case "$mode" in
       clean $cfg
     done ;;
   liveness)
-    for cfg in "-DP=2 -DW0=2 -DW1=2 -DMAXSB=1" "-DP=2 -DN=8 -DH0=31 -DH1=224 -DW0=2 -DW1=1"; do
+    for cfg in "-DP=2 -DW0=1 -DW1=1 -DMAXSB=2" "-DP=2 -DN=8 -DH0=31 -DH1=224 -DW0=2 -DW1=1"; do
       # shellcheck disable=SC2086
       pan -DLIVENESS $cfg -- -DNFAIR=3 -- -a -f -q
       # shellcheck disable=SC2086
