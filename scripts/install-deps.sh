@@ -6,7 +6,8 @@
 #                                    TetGen and Gmsh to produce meshes for the checker tests,
 #                                    meshio to write and read files in the io tests,
 #                                    pybind11, the Python headers and pytest for the
-#                                    Python module pdr and its tests)
+#                                    Python module pdr and its tests, spin to model-check
+#                                    the parallel protocol)
 #   scripts/install-deps.sh --bench  also the benchmark-only dependencies (CGAL, TetGen)
 set -euo pipefail
 
@@ -15,7 +16,7 @@ pkgs=(build-essential cmake ninja-build pkg-config libgmp-dev libboost-dev libcl
 for arg in "$@"; do
   case "$arg" in
     --tests) pkgs+=(librapidcheck-dev libgtest-dev tetgen gmsh clang libclang-rt-14-dev
-                     python3-meshio python3-numpy pybind11-dev python3-dev python3-pytest) ;;
+                     python3-meshio python3-numpy pybind11-dev python3-dev python3-pytest spin) ;;
     --bench) pkgs+=(libcgal-dev tetgen) ;;
     *) echo "install-deps.sh: unknown option '$arg' (use --tests or --bench)" >&2; exit 2 ;;
   esac
