@@ -147,6 +147,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   opt.d = an.report.feature.d;
   opt.admissible = an.report.admissible;
   opt.acute_vertices = refine::acute_vertices(an.report);  // the guards' shells
+  opt.exact_theory = refine::theorem_applies(an);
   if (progress.enabled())
     opt.on_progress = [&progress](std::size_t vertices) { progress.count(vertices, "vertices"); };
   progress.phase("surface");
@@ -173,6 +174,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   const double t_refine = t_before + timer.lap("refine");
   summary.set("ratio_bound", opt.ratio);
   summary.set("h", std::isfinite(rr.stats.h) ? rr.stats.h : 0.0);
+  // Theorem 1's a-priori h, where its hypotheses hold exactly: the final check requires
+  // every edge to be longer (quality.shortest_edge).
+  if (rr.stats.h_theorem > 0) summary.set("h_theorem", rr.stats.h_theorem);
   summary.set("inserted", nlohmann::json{{"tet_circumcenters", rr.stats.tet_circumcenters},
                            {"subfacet_circumcenters", rr.stats.subfacet_circumcenters},
                            {"subsegment_splits", rr.stats.subsegment_splits},
@@ -242,6 +246,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     check::Options co;
     co.ratio_bound = opt.ratio;
     co.threads = args.threads;
+    if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
     const check::Report report = check::check_mesh(check::view_of(mesh), an.domain.plc, co);

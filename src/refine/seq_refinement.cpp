@@ -32,6 +32,32 @@
 namespace pdr::refine {
 namespace {
 
+// Theorem 1's h, a priori. The proof of Lemma 1 holds for any h such that every edge of the
+// initial mesh is longer than h and every tet refined for its size has circumradius > 2h
+// (the encroachment and quality steps carry the bound from there). So h is the smallest of
+// the shortest edge of T_o inside Omega, L/2 for the circumradius bound L, and, for the
+// volume bound V, half the smallest circumradius a tet of volume > V can have: the regular
+// tet is the largest in its circumsphere (volume 8R^3/(9*sqrt(3))), so R > (9*sqrt(3)V/8)^(1/3).
+// Computed in floating point, then lowered by 2^-30 relative: any smaller h is as valid.
+double theorem_h(const VolumeMesh& m, const RefineOptions& o) {
+  const TetStore& s = m.dt.store();
+  double e2 = std::numeric_limits<double>::infinity();
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const Point& a = m.dt.point(s.vertex(t, i));
+        const Point& b = m.dt.point(s.vertex(t, j));
+        const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+        e2 = std::min(e2, dx * dx + dy * dy + dz * dz);
+      }
+  }
+  double h = std::sqrt(e2);
+  if (o.size) h = std::min(h, *o.size / 2);
+  if (o.max_volume) h = std::min(h, std::cbrt(9 * std::sqrt(3.0) * *o.max_volume / 8) / 2);
+  return h * (1 - 0x1p-30);
+}
+
 class Refiner {
  public:
   Refiner(VolumeMesh& m, const RefineOptions& o)
@@ -42,6 +68,14 @@ class Refiner {
   RefineResult run() {
     res_.stats.vertex_cap = budget_.cap();
     res_.stats.h = std::numeric_limits<double>::infinity();
+    // The theorem's h where its hypotheses hold: exactly, with T_o holding every subsegment
+    // and subfacet of D (§2.1 property 1) and none of them encroached (invariant 1 at the
+    // start, the base case of Lemma 1). Rounded input can miss either by an ulp (a vertex a
+    // hair inside an equatorial ball it should lie on); the repairs that follow are no step
+    // of Fig. 2, and the a-priori bound is then not claimed.
+    if (o_.admissible && o_.exact_theory && m_.missing_subfacets.empty() &&
+        m_.missing_subsegments.empty() && !encroached_at_start())
+      res_.stats.h_theorem = theorem_h(m_, o_);
     const TetStore& s = m_.dt.store();
     if (!o_.admissible) start_guards();
     if (!m_.missing_subfacets.empty() || !m_.missing_subsegments.empty()) {
@@ -258,6 +292,17 @@ class Refiner {
     vertex_star(m_, step_[i].first, loc.tet, around_);
   }
 
+  // Some subsegment or subfacet of D has a vertex strictly inside its ball in T_o.
+  bool encroached_at_start() const {
+    const TetStore& s = m_.dt.store();
+    std::vector<TetId> all;
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t) && !s.is_ghost(t)) all.push_back(t);
+    EncroachedLists found;
+    find_encroached(m_, all, found);
+    return !found.subsegments.empty() || !found.subfacets.empty();
+  }
+
   // Rounding repair at step_[i]'s vertex (issue #3, refine/flat.hpp rule 2): refines a
   // subfacet face of a tet of its star whose fourth vertex lies strictly inside the
   // subfacet's equatorial ball, as the bad-tet queue would. True when that added a vertex.
@@ -280,7 +325,10 @@ class Refiner {
   // repairs' vertices join the step; the vertex cap bounds them) and only then audits
   // invariant 1 on each one's current star: every tet the step created holds one of them.
   void after_insert(VertexId v, const char* what, double size2) {
-    if (o_.audit) audited([&] { audit_edges(m_, v, star_, what, size2, res_.stats.h); });
+    // The theorem's h where its hypotheses hold exactly; else the run's own (outside the
+    // theory Lemma 1 is not expected to hold: the audit only records its first failure).
+    const double h = res_.stats.h_theorem > 0 ? res_.stats.h_theorem : res_.stats.h;
+    if (o_.audit) audited([&] { audit_edges(m_, v, star_, what, size2, h); });
     queue_star();
     if (guard_.active()) find_encroached(m_, star_, enc_);
     step_.emplace_back(v, what);
@@ -431,6 +479,26 @@ class Refiner {
 };
 
 }  // namespace
+
+bool theorem_applies(const domain::DomainAnalysis& an) {
+  const domain::DomainReport& r = an.report;
+  if (!r.admissible || r.right_within_tolerance != 0 || !r.tolerance_facets.empty()) return false;
+  const Plc& plc = an.domain.plc;
+  for (const PlcFacet& f : plc.facets) {
+    bool parallel = false;
+    for (int k = 0; k < 3 && !parallel; ++k) {
+      std::optional<double> c;
+      parallel = true;
+      for (const auto& polygon : f.polygons)
+        for (std::uint32_t v : polygon) {
+          if (!c) c = plc.points[v][k];
+          parallel = parallel && plc.points[v][k] == *c;
+        }
+    }
+    if (!parallel) return false;
+  }
+  return true;
+}
 
 RefineResult refine(VolumeMesh& m, const RefineOptions& options) {
   return Refiner(m, options).run();

@@ -61,6 +61,8 @@
 #include "refine/quality.hpp"
 #include "refine/volume_mesh.hpp"
 
+#include "domain/analysis.hpp"
+
 namespace pdr::refine {
 
 struct RefineOptions {
@@ -80,10 +82,22 @@ struct RefineOptions {
   // mesh M_o: the boundary layer refined to the final bounds, the interior coarser, so the
   // parallel phase rarely meets D: app/parallel.hpp).
   std::optional<TetBounds> interior;
+  // The domain meets Theorem 1's hypotheses exactly (theorem_applies below): the audit then
+  // holds every new edge to the theorem's a-priori h (RefineStats::h_theorem) rather than to
+  // the smallest size the run refined.
+  bool exact_theory = false;
   std::vector<std::uint32_t> acute_vertices;  // inadmissible: acute_vertices(report)
                                               // (refine/split.hpp); empty: every input
                                               // vertex
 };
+
+// Theorem 1's hypotheses hold, and the refinement's constructions on ∂Ω are exact:
+// admissible, with no angle read as 90 or 270 degrees within tolerance, no facet accepted
+// as planar within tolerance, and every facet parallel to a coordinate plane (so every
+// subfacet circumcenter and segment midpoint keeps the facet's constant coordinate; on a
+// tilted facet they are rounded off it by ulps, and the repairs of refine/flat.hpp, which
+// are no step of Fig. 2, may refine elements below the a-priori bound).
+bool theorem_applies(const domain::DomainAnalysis& an);
 
 struct Leftover {
   TetId tet = kNoTet;
@@ -104,7 +118,12 @@ struct RefineStats {
   std::size_t conformity_breaks = 0;    // insertions after which D was not in T
   std::size_t conformity_splits = 0;    // refinements of elements missing from T
   std::size_t conformity_refused = 0;   // ... that a guard refused: T does not conform
-  double h = 0;  // the audit's h: min over refinements of (l/2, R_f/√2, R_t/2)
+  double h = 0;  // min over refinements of (l/2, R_f/√2, R_t/2): the largest h the run met
+  // Theorem 1's h, a priori (from T_o and the size bounds, before any refinement; see
+  // theorem_h in seq_refinement.cpp), when the hypotheses hold (RefineOptions::exact_theory
+  // and T_o conforms), else 0: the audit holds every new edge to it, and `pdr mesh` checks
+  // that every final edge is longer.
+  double h_theorem = 0;
   std::size_t audit_failures = 0;  // inadmissible domains only (else the first throws)
   std::string audit_note;          // the first of them
 };

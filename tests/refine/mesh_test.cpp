@@ -39,11 +39,13 @@ MeshRun mesh(const std::string& name, std::optional<double> max_volume) {
   o.max_volume = max_volume;
   o.d = an.report.feature.d;
   o.admissible = an.report.admissible;
+  o.exact_theory = theorem_applies(an);
   o.acute_vertices = acute_vertices(an.report);
   r.rr = refine(r.vm, o);
   const MeshData m = to_mesh_data(r.vm.dt, r.vm.inside);
   check::Options co;
   co.ratio_bound = 2.0;
+  if (r.rr.stats.h_theorem > 0) co.min_edge = r.rr.stats.h_theorem;  // Theorem 1 (1), a priori
   r.report = check::check_mesh(check::view_of(m), an.domain.plc, co);
   return r;
 }
@@ -55,6 +57,10 @@ TEST(RefineMesh, AdmissibleDomainsPassEveryCheck) {
       SCOPED_TRACE(name);
       MeshRun r = mesh(name, v);
       EXPECT_TRUE(r.admissible);
+      // Theorem 1's a-priori h applies (axis-parallel facets, T_o unencroached): the audit
+      // held every new edge to it and the check every final edge (quality.shortest_edge).
+      EXPECT_GT(r.rr.stats.h_theorem, 0);
+      EXPECT_EQ(check::to_string(r.report.find("quality.shortest_edge")->status), "pass");
       EXPECT_TRUE(r.rr.leftovers.empty());
       EXPECT_TRUE(r.rr.stop_reason.empty());
       EXPECT_TRUE(r.report.ok()) << check::to_text(r.report);
