@@ -186,8 +186,8 @@ struct UnionFind {
 // plane of the outward face (u, v, w): the sign of orient3d(u, v, w, x), never Zero.
 Sign side_of_pushed_point(P u, P v, P w, P a, P b, P d, int k_face) {
   const signs::Plane plane(u, v, w);
-  for (P q : {a, b, d})
-    if (const Sign s = plane.orient(q); s != Sign::Zero) return s;
+  for (const Point* q : {&a, &b, &d})
+    if (const Sign s = plane.orient(*q); s != Sign::Zero) return s;
   return sgn(signs::orient2d(u, v, w, k_face)) * sgn(signs::orient2d(a, b, d, k_face)) > 0
              ? Sign::Positive
              : Sign::Negative;
@@ -219,13 +219,7 @@ DegreeVerdict overlap_by_degree(const Context& c, CheckResult& r) {
   for (std::size_t i = 0; i < m; ++i) {
     const FaceRef& h = topo.holders(topo.boundary[i])[0];
     S[i] = face_of(tets[h.tet], h.local);
-    Box& b = boxes[i];
-    b.lo = b.hi = pts[S[i][0]];
-    for (int k = 1; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) {
-        b.lo[a] = std::min(b.lo[a], pts[S[i][k]][a]);
-        b.hi[a] = std::max(b.hi[a], pts[S[i][k]][a]);
-      }
+    boxes[i] = box_of<3>(pts, S[i]);
   }
   // (a): candidate pairs from a grid over the faces' boxes, each pair examined once, in the
   // cell holding the low corner of the intersection of their cell ranges.
@@ -287,13 +281,7 @@ DegreeVerdict overlap_by_degree(const Context& c, CheckResult& r) {
   std::uint64_t covered = 0;
   for (std::size_t t = 0; t < tets.size(); ++t) {
     const Tet& k = tets[t];
-    Box b;
-    b.lo = b.hi = pts[k[0]];
-    for (int v = 1; v < 4; ++v)
-      for (int a = 0; a < 3; ++a) {
-        b.lo[a] = std::min(b.lo[a], pts[k[v]][a]);
-        b.hi[a] = std::max(b.hi[a], pts[k[v]][a]);
-      }
+    const Box b = box_of<4>(pts, k);
     auto it = std::lower_bound(probes.begin(), probes.end(), b.lo[0],
                                [&](const Probe& p, double x) { return pts[S[p.face][0]][0] < x; });
     for (; it != probes.end() && pts[S[it->face][0]][0] <= b.hi[0]; ++it) {

@@ -10,6 +10,7 @@
 // grid only proposes candidates; exact predicates decide.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -95,5 +96,17 @@ class BoxGrid {
 };
 
 Box bounding_box(std::span<const Point> points);
+
+// The box of the points `ids` (a tet's four, a triangle's three) index.
+template <std::size_t N>
+Box box_of(std::span<const Point> points, const std::array<std::uint32_t, N>& ids) {
+  Box b{points[ids[0]], points[ids[0]]};
+  for (std::size_t k = 1; k < N; ++k)
+    for (int a = 0; a < 3; ++a) {
+      b.lo[a] = std::min(b.lo[a], points[ids[k]][a]);
+      b.hi[a] = std::max(b.hi[a], points[ids[k]][a]);
+    }
+  return b;
+}
 
 }  // namespace pdr::check

@@ -205,15 +205,7 @@ void check_pairs(const Context& c, CheckResult& r) {
   const auto& tets = c.mesh.tets;
   const auto& pts = c.mesh.points;
   std::vector<Box> boxes(tets.size());
-  for (std::size_t t = 0; t < tets.size(); ++t) {
-    Box& b = boxes[t];
-    b.lo = b.hi = pts[tets[t][0]];
-    for (int k = 1; k < 4; ++k)
-      for (int i = 0; i < 3; ++i) {
-        b.lo[i] = std::min(b.lo[i], pts[tets[t][k]][i]);
-        b.hi[i] = std::max(b.hi[i], pts[tets[t][k]][i]);
-      }
-  }
+  for (std::size_t t = 0; t < tets.size(); ++t) boxes[t] = box_of<4>(pts, tets[t]);
   // Cells a few times larger than a typical tet box: few boxes straddle cells, and the
   // sweep along x inside a cell prunes most non-overlapping boxes (measured best).
   const BoxGrid grid(boxes, static_cast<double>(tets.size()) / 32);
