@@ -234,6 +234,7 @@ PlcDomain build_domain(const Plc& plc, const PlcOptions& options) {
   detail::check_points(plc);
   std::vector<detail::FacetPolys> polys = detail::check_polygons(plc);
   detail::split_edges(plc, polys);
+  detail::fit_planes(polys, dom);
   detail::triangulate_faces(polys, dom);
   detail::build_structure(polys, dom);
   detail::check_crossings(dom);

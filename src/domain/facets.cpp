@@ -1,7 +1,7 @@
 // Step 4 of build_domain: the plane and the triangulation of every face (paper §1.1:
 // "planar, segment-bounded, polygonal facets", not necessarily convex, with holes).
 //
-// Per face: fit the plane and classify planarity (domain/plane.hpp); project the facet's
+// Per face, with the plane step 4a fitted (domain/coplanar.cpp): project the facet's
 // vertices by the plane's chart (exact: a projection only drops a coordinate); build the
 // constrained triangulation of its polygons' edges (domain/ctri.hpp), which detects edges
 // through vertices and crossing edges; remove the part outside the polygons and the parts
@@ -35,21 +35,7 @@ void triangulate_face(const FacetPolys& fp, std::size_t f, PlcDomain& dom) {
   for (const auto& s : fp.segs) verts.insert(verts.end(), s.begin(), s.end());
   std::sort(verts.begin(), verts.end());
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-
-  const PlaneFit fit = fit_facet_plane(plc.points, verts, tol);
-  if (fit.status == PlaneStatus::Collinear)
-    here("non-degenerate facet: all " + std::to_string(verts.size()) +
-         " vertices of this facet are collinear, so it has no area; remove it or fix it");
-  if (fit.status == PlaneStatus::NotPlanar)
-    here("planar facet: " + vertex_name(plc, fit.worst) + " lies " +
-         number(fit.plane.max_deviation) +
-         " facet diameters off the best-fit plane of this facet (tolerance " + number(tol) +
-         "); fix the coordinates, split the facet into planar facets, or raise the "
-         "planarity tolerance");
-  DomainFacet& F = dom.facets[f];
-  F.is_face = true;
-  F.plane = fit.plane;
-  if (!F.plane.exact) dom.tolerance_facets.push_back(static_cast<std::uint32_t>(f));
+  DomainFacet& F = dom.facets[f];  // plane fitted by step 4a (domain/coplanar.cpp)
 
   std::unordered_map<std::uint32_t, std::uint32_t> local;
   std::vector<P2> p2(verts.size());

@@ -30,7 +30,10 @@ void check_points(const Plc& plc);
 std::vector<FacetPolys> check_polygons(const Plc& plc);
 // Step 3 (domain/split.cpp).
 void split_edges(const Plc& plc, std::vector<FacetPolys>& polys);
-// Step 4 (domain/facets.cpp): fills facets[f].plane, .tris, .is_face; tolerance_facets.
+// Step 4a (domain/coplanar.cpp): fills facets[f].plane, .plane_group, .is_face;
+// tolerance_facets.
+void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom);
+// Step 4 (domain/facets.cpp): fills facets[f].tris.
 void triangulate_faces(const std::vector<FacetPolys>& polys, PlcDomain& dom);
 // Segments, incidences and vertex lists (domain/build.cpp).
 void build_structure(const std::vector<FacetPolys>& polys, PlcDomain& dom);

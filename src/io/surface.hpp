@@ -22,8 +22,15 @@
 //      facet: its boundary loops as polygons (split at vertices a loop visits twice), and,
 //      for each inner loop (one that runs against the region's orientation), a facet hole
 //      point strictly inside an ear of that loop, verified exactly in every axis projection
-//      in which the ear is not degenerate. A face that is not exactly planar stays a facet
-//      of its own (the domain's planarity tolerance then judges it);
+//      in which the ear is not degenerate;
+//   5b. faces coplanar within the planarity tolerance: merged regions (and single faces)
+//      that share an edge and a marker, are not folded onto each other, and whose vertices
+//      all lie within an eighth of the planarity tolerance (relative to the union's
+//      bounding-box diagonal) of one plane are merged too, greedily in face order (the two
+//      triangles of a planar quad in a rotated file are a few ulps off each other's planes;
+//      kept apart they would be two facets with a segment and small angles between them).
+//      This classifies imprecise input, as the domain's planarity tolerance does, which then
+//      judges each facet;
 //   6. vertices left only inside a merged facet (the centre of a fan, the inner vertices of
 //      a finely triangulated plane) are not part of the domain and are dropped, unless
 //      another facet uses them, in which case they become 1-vertex polygons of the facet.
@@ -74,7 +81,8 @@ struct Surface {
 };
 
 // The Plc of a closed, edge-manifold surface; see the steps above.
-Plc surface_to_plc(const Surface& surface);
+// planarity_tolerance: step 5b's (the domain analysis's default, PlcOptions).
+Plc surface_to_plc(const Surface& surface, double planarity_tolerance = 1e-9);
 
 // Surface readers, one per format; each documents its format in its file header.
 Surface read_off(const std::string& path);  // off_read.cpp

@@ -3,6 +3,7 @@
 // facets leave out. The decisions are exact predicates; the one construction, a hole
 // point, is an ear's centroid checked with exact orient2d before it is used.
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 
@@ -21,12 +22,21 @@ Sign orient_along(const Point& a, const Point& b, const Point& c, int axis) {
   return orient2d(pa.data(), pb.data(), pc.data());
 }
 
-// An axis along which the face's plane does not project to a line.
+// The axis of the largest normal component of the face's plane triple (a choice in double;
+// orient2d along it then decides exactly). For exactly coplanar faces any axis along which
+// the plane does not project to a line would do; for faces coplanar only within tolerance
+// (step 5b) an axis nearly in their plane could flip one face's turn against the other's.
 int projection_axis(const SurfaceTopology& t, std::size_t f) {
   const auto& [a, b, c] = t.plane[f];
-  for (int axis = 0; axis < 3; ++axis)
-    if (orient_along(t.points[a], t.points[b], t.points[c], axis) != Sign::Zero) return axis;
-  throw std::logic_error("surface_facets: a face's plane triple is collinear");
+  const Point &o = t.points[a], &p = t.points[b], &q = t.points[c];
+  const double ux = p[0] - o[0], uy = p[1] - o[1], uz = p[2] - o[2];
+  const double vx = q[0] - o[0], vy = q[1] - o[1], vz = q[2] - o[2];
+  const double n[3] = {std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz),
+                       std::fabs(ux * vy - uy * vx)};
+  const int axis = n[0] >= n[1] && n[0] >= n[2] ? 0 : n[1] >= n[2] ? 1 : 2;
+  if (orient_along(o, p, q, axis) == Sign::Zero)
+    throw std::logic_error("surface_facets: a face's plane triple is collinear");
+  return axis;
 }
 
 // The turn at the lexicographically smallest corner of a closed polygon projected along
@@ -81,6 +91,99 @@ bool same_facet(const Surface& s, const SurfaceTopology& t, std::size_t f, std::
                         ", so they overlap; remove the doubled faces");
   }
   return true;
+}
+
+// Step 5b: regions of step 5 that are coplanar only within the planarity tolerance (the two
+// triangles of a planar quad in a rotated file: their fourth corners are a few ulps off each
+// other's planes). Greedy, in face order: a region grows across edges into neighbouring
+// regions with the same marker, not folded onto it, while every vertex of the union lies
+// within kMergeShare * tolerance * (the union's bounding-box diagonal) of the plane of the
+// seed face's defining triple. The share leaves the domain's least-squares test
+// (domain/plane.hpp), which judges the merged facet with the full tolerance, a margin.
+constexpr double kMergeShare = 0.125;
+
+class NearPlane {
+ public:
+  NearPlane(const SurfaceTopology& t, std::size_t seed) : t_(t) {
+    const auto& [a, b, c] = t.plane[seed];
+    o_ = t.points[a];
+    const Point &p = t.points[b], &q = t.points[c];
+    const double ux = p[0] - o_[0], uy = p[1] - o_[1], uz = p[2] - o_[2];
+    const double vx = q[0] - o_[0], vy = q[1] - o_[1], vz = q[2] - o_[2];
+    n_ = {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+    const double len = std::sqrt(n_[0] * n_[0] + n_[1] * n_[1] + n_[2] * n_[2]);
+    for (double& x : n_) x /= len;
+    lo_ = hi_ = o_;
+  }
+  // Adds the vertices when the union stays within the tolerance; false (nothing added)
+  // otherwise.
+  bool add(std::span<const std::uint32_t> verts, double tolerance) {
+    Point lo = lo_, hi = hi_;
+    double dev = max_dev_;
+    for (std::uint32_t v : verts) {
+      const Point& p = t_.points[v];
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+      dev = std::max(dev, std::fabs(n_[0] * (p[0] - o_[0]) + n_[1] * (p[1] - o_[1]) +
+                                    n_[2] * (p[2] - o_[2])));
+    }
+    const double diam = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+                                  (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                  (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    if (!(dev <= kMergeShare * tolerance * diam)) return false;
+    lo_ = lo, hi_ = hi, max_dev_ = dev;
+    return true;
+  }
+
+ private:
+  const SurfaceTopology& t_;
+  Point o_{}, n_{}, lo_{}, hi_{};
+  double max_dev_ = 0;
+};
+
+// Face f and its neighbour g lie on opposite sides of their common edge (not folded onto
+// each other).
+bool unfolded(const Surface& s, const SurfaceTopology& t, std::size_t f, std::size_t g) {
+  const int axis = projection_axis(t, f);
+  const Sign sf = polygon_sign(t, t.face(s, f), axis);
+  return sf != Sign::Zero && sf == polygon_sign(t, t.face(s, g), axis);
+}
+
+void merge_within_tolerance(const Surface& s, const SurfaceTopology& t, double tolerance,
+                            UnionFind& uf) {
+  const std::size_t nf = s.face_count();
+  std::vector<std::vector<std::uint32_t>> members(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) members[uf.find(f)].push_back(f);
+  std::vector<std::uint8_t> taken(nf, 0);
+  std::vector<std::uint32_t> verts;
+  auto region_vertices = [&](std::uint32_t root) {
+    verts.clear();
+    for (std::uint32_t f : members[root]) {
+      const auto c = t.face(s, f);
+      verts.insert(verts.end(), c.begin(), c.end());
+    }
+    return std::span<const std::uint32_t>(verts);
+  };
+  for (std::uint32_t seed = 0; seed < nf; ++seed) {
+    if (uf.find(seed) != seed || taken[seed]) continue;
+    taken[seed] = 1;
+    NearPlane plane(t, seed);
+    plane.add(region_vertices(seed), tolerance);
+    std::vector<std::uint32_t> queue{seed};  // region roots of the group
+    for (std::size_t q = 0; q < queue.size(); ++q)
+      for (std::uint32_t f : members[queue[q]]) {
+        const std::size_t b = s.face_start[f], n = s.face_start[f + 1] - b;
+        for (std::size_t i = 0; i < n; ++i) {
+          const std::uint32_t g = t.neighbour[b + i];
+          const std::uint32_t root = uf.find(g);
+          if (root == uf.find(seed) || taken[root] || s.face_markers[f] != s.face_markers[g] ||
+              !unfolded(s, t, f, g) || !plane.add(region_vertices(root), tolerance))
+            continue;
+          taken[root] = 1;
+          queue.push_back(root);
+          uf.join(seed, root);
+        }
+      }
+  }
 }
 
 struct Region {
@@ -223,7 +326,7 @@ PlcFacet region_facet(const Surface& s, const SurfaceTopology& t, const Region& 
 
 }  // namespace
 
-Plc surface_to_plc(const Surface& s) {
+Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
   if (s.face_count() == 0)
     throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
                                   "closed surface of triangles or polygons");
@@ -239,6 +342,7 @@ Plc surface_to_plc(const Surface& s) {
         uf.join(static_cast<std::uint32_t>(f), g);
     }
   }
+  merge_within_tolerance(s, t, planarity_tolerance, uf);
   std::vector<Region> regions;
   std::vector<std::uint32_t> region_of(nf);
   for (std::uint32_t f = 0; f < nf; ++f) {

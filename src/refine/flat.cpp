@@ -22,9 +22,11 @@ std::optional<std::uint32_t> pick(const VolumeMesh& m, TetId t, bool flat) {
     const Point &a = m.surf.point(x.v[0]), &b = m.surf.point(x.v[1]), &c = m.surf.point(x.v[2]);
     const std::uint32_t v = apex < m.d2s.size() ? m.d2s[apex] : kNone;
     bool hit = false;
+    const std::uint32_t plane = m.surf.facets[x.facet].plane_group;
     if (flat && v != kNone)
       for (const std::uint32_t y : m.surf.vertex_subfacets(v))
-        hit = hit || (m.surf.subfacet(y).alive && m.surf.subfacet(y).facet == x.facet);
+        hit = hit || (m.surf.subfacet(y).alive &&
+                      m.surf.facets[m.surf.subfacet(y).facet].plane_group == plane);
     hit = hit || in_equatorial_ball(a, b, c, m.dt.point(apex)) == Sign::Positive;
     if (!hit) continue;
     const double r2 = construct::triangle_circumradius2(a, b, c);  // a choice only

@@ -1,6 +1,8 @@
 // Subfacets a tet of T asks to refine (issue #3: facets a few ulps off their planes).
 //
-// 1. Flat tets on a facet: a tet whose four vertices all lie on one facet of D. On an exactly
+// 1. Flat tets on a facet: a tet whose four vertices all lie on one facet of D, or on
+//    facets of one coplanar group (domain/coplanar.cpp: facets across a segment coplanar
+//    within the planarity tolerance share one plane). On an exactly
 //    planar facet with exactly coplanar vertices such a tet cannot exist (its orientation
 //    would be zero). On a tilted facet rounding puts constructed vertices a few ulps off the
 //    plane, and a near-cocircular quadruple a, b, c, d of the facet may then be a Delaunay
@@ -34,7 +36,8 @@
 namespace pdr::refine {
 
 // The subfacet of largest circumradius among the faces of finite tet t that are
-// subfacets of a facet f with (1) the fourth vertex a vertex of f's triangulation, or (2)
+// subfacets of a facet f with (1) the fourth vertex a vertex of the triangulation of f or
+// of a facet in f's coplanar group, or (2)
 // the fourth vertex strictly inside the subfacet's equatorial ball; nullopt if none.
 std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t);
 // The same for (2) alone.

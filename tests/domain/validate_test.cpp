@@ -137,6 +137,59 @@ TEST(PlcValidate, PlanarityToleranceClassifiesImpreciseFacets) {
   EXPECT_TRUE(Fails(near, kFacetLine + 1, "planar facet", PlcOptions{1e-15}));
 }
 
+// The box with each side given as two triangular facets, rotated so that the two triangles of
+// a side are coplanar only within rounding.
+Plc rotated_triangle_box() {
+  const Plc b = box({0, 0, 0}, {1, 1, 1});
+  Plc p = b;
+  p.facets.clear();
+  for (const PlcFacet& f : b.facets) {
+    const auto& q = f.polygons[0];
+    for (const std::vector<std::uint32_t>& tri :
+         {std::vector<std::uint32_t>{q[0], q[1], q[2]}, std::vector<std::uint32_t>{q[0], q[2], q[3]}}) {
+      PlcFacet t = f;
+      t.polygons = {tri};
+      p.facets.push_back(t);
+    }
+  }
+  const double c = std::cos(0.7), d = std::sin(0.7), e = std::cos(1.1), g = std::sin(1.1);
+  for (Point& x : p.points) {
+    const Point y{c * x[0] - d * x[1], d * x[0] + c * x[1], x[2]};
+    x = {y[0], e * y[1] - g * y[2], g * y[1] + e * y[2]};
+  }
+  return p;
+}
+
+TEST(PlcValidate, FacetsCoplanarWithinToleranceShareOnePlane) {
+  const Plc p = rotated_triangle_box();
+  const PlcDomain dom = build_domain(p);
+  ASSERT_EQ(dom.face_count(), 12u);
+  std::size_t inexact = 0;
+  for (std::size_t f = 0; f < 12; f += 2) {
+    const DomainFacet &a = dom.facets[f], &b = dom.facets[f + 1];
+    // One group per side, named by its first facet, with one plane (triple and chart).
+    EXPECT_EQ(a.plane_group, f);
+    EXPECT_EQ(b.plane_group, f);
+    EXPECT_EQ(a.plane.triple, b.plane.triple);
+    EXPECT_EQ(a.plane.projection.drop, b.plane.projection.drop);
+    EXPECT_EQ(a.plane.projection.swap, b.plane.projection.swap);
+    EXPECT_EQ(a.tris.size(), 1u);
+    inexact += !a.plane.exact;
+  }
+  EXPECT_GE(inexact, 3u);  // sides where the grouping is not exact coplanarity
+  EXPECT_EQ(dom.segments.size(), 18u);  // the diagonals stay segments
+  // With no tolerance each triangle keeps its own (exact) plane.
+  const PlcDomain alone = build_domain(p, PlcOptions{0.0});
+  for (std::size_t f = 0; f < 12; ++f) EXPECT_EQ(alone.facets[f].plane_group, f);
+  // A side folded along its diagonal by far more than the tolerance is two planes.
+  Plc folded = p;
+  for (double& x : folded.points[6]) x += 1e-4;
+  const PlcDomain two = build_domain(folded);
+  std::size_t groups = 0;
+  for (std::size_t f = 0; f < 12; ++f) groups += two.facets[f].plane_group == f;
+  EXPECT_EQ(groups, 6u + 3u);
+}
+
 TEST(PlcValidate, RejectsCrossingFacets) {
   const Plc p = merge(box({0, 0, 0}, {2, 2, 2}), box({1, 1, 1}, {3, 3, 3}));
   const std::string e = error_of(p);

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
+#include "geom/predicates.hpp"
 #include "io/error.hpp"
 #include "io/mesh_io.hpp"
 #include "io/surface.hpp"
@@ -72,6 +74,59 @@ TEST(Surface, GridSidesLoseTheirInnerVertices) {
   }
   for (const Point& p : plc.points)  // no side centre is left
     EXPECT_NE(std::count(p.begin(), p.end(), 0.5), 2) << p[0] << ' ' << p[1] << ' ' << p[2];
+}
+
+// Rotated by a rotation whose matrix entries are not dyadic: the corners of a side are then
+// coplanar only within rounding (orient3d of the fourth corner is not exactly zero).
+Shape rotated(Shape s) {
+  const double c = std::cos(0.7), d = std::sin(0.7), e = std::cos(1.1), f = std::sin(1.1);
+  for (Point& p : s.points) {
+    const Point q{c * p[0] - d * p[1], d * p[0] + c * p[1], p[2]};
+    p = {q[0], e * q[1] - f * q[2], f * q[1] + e * q[2]};
+  }
+  return s;
+}
+
+std::size_t inexact_sides(const Shape& s) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i + 1 < s.faces.size(); i += 2) {
+    const auto &a = s.faces[i], &b = s.faces[i + 1];
+    n += orient3d(s.points[a[0]], s.points[a[1]], s.points[a[2]], s.points[b[2]]) != Sign::Zero;
+  }
+  return n;
+}
+
+TEST(Surface, TrianglesCoplanarWithinToleranceMerge) {
+  // Step 5b: a rotated box of 12 triangles is the rotated box of 6 squares, though the two
+  // triangles of a side are a few ulps off each other's planes.
+  ScratchDir dir;
+  const Shape tri = rotated(box_triangles());
+  ASSERT_GE(inexact_sides(tri), 3u);  // the case the exact merge of step 5 leaves apart
+  const Plc plc = read_off_text(dir, off_text(tri));
+  EXPECT_EQ(plc.facets.size(), 6u);
+  for (const PlcFacet& f : plc.facets) {
+    ASSERT_EQ(f.polygons.size(), 1u);
+    EXPECT_EQ(f.polygons[0].size(), 4u);
+  }
+  EXPECT_EQ(facet_sets(plc), facet_sets(read_off_text(dir, off_text(rotated(box_squares())))));
+  // The 2x2 grid per side, rotated: the side centres go, as without the rotation.
+  const Plc grid = read_off_text(dir, off_text(rotated(box_grid())));
+  EXPECT_EQ(grid.facets.size(), 6u);
+  EXPECT_EQ(grid.points.size(), 20u);
+  // With no tolerance only exactly coplanar faces merge.
+  const Plc exact = surface_to_plc(read_off(dir / "s.off"), 0.0);
+  EXPECT_GT(exact.facets.size(), 6u);
+}
+
+TEST(Surface, FoldsBeyondToleranceStayApart) {
+  // One corner of the box moved out by 1e-6 along the diagonal (a relative deviation a
+  // thousand times the tolerance): the three sides at it stay six triangles, the other
+  // three merge.
+  ScratchDir dir;
+  Shape tri = box_triangles();
+  for (double& x : tri.points[7]) x += 1e-6;
+  const Plc plc = read_off_text(dir, off_text(rotated(tri)));
+  EXPECT_EQ(plc.facets.size(), 3u + 6u);
 }
 
 TEST(Surface, RingBecomesAFacetWithAHole) {

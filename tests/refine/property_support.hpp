@@ -125,7 +125,8 @@ bool register_replays(const char* suite, const std::string& prefix,
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     const std::string name = e.path().filename().string();
-    if (name.rfind(prefix, 0) == 0 && e.path().extension() == ".poly") files.push_back(e.path());
+    const auto ext = e.path().extension();
+    if (name.rfind(prefix, 0) == 0 && (ext == ".poly" || ext == ".off")) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   for (const auto& p : files) {
