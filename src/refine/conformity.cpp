@@ -127,6 +127,57 @@ std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
   return live;
 }
 
+bool star_flags_consistent(const VolumeMesh& m, std::span<const TetId> star) {
+  const TetStore& s = m.dt.store();
+  for (const TetId t : star) {
+    if (s.is_ghost(t)) continue;
+    for (int f = 0; f < 4; ++f) {
+      const TetId n = s.neighbour(t, f);
+      const int other = s.is_ghost(n) ? 0 : m.inside[n];
+      if ((m.inside[t] ^ other) != (m.face_subfacet(t, f) ? 1 : 0)) return false;
+    }
+  }
+  return true;
+}
+
+std::vector<TetId> reflag_all(VolumeMesh& m, std::size_t& conflicts) {
+  const TetStore& s = m.dt.store();
+  std::vector<std::uint8_t> flag(s.slots(), 2);  // 2: not reached yet
+  std::vector<TetId> queue;
+  conflicts = 0;
+  auto reach = [&](TetId n, std::uint8_t value) {
+    if (flag[n] == 2) {
+      flag[n] = value;
+      queue.push_back(n);
+    } else if (flag[n] != value) {
+      ++conflicts;
+    }
+  };
+  for (TetId g = 0; g < s.slots(); ++g) {
+    if (!s.is_alive(g) || !s.is_ghost(g)) continue;
+    for (int f = 0; f < 4; ++f) {
+      const TetId n = s.neighbour(g, f);
+      if (!s.is_ghost(n)) reach(n, m.face_subfacet(n, s.back_face(g, f)) ? 1 : 0);
+    }
+  }
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const TetId t = queue[q];
+    for (int f = 0; f < 4; ++f) {
+      const TetId n = s.neighbour(t, f);
+      if (s.is_ghost(n)) continue;
+      reach(n, static_cast<std::uint8_t>(flag[t] ^ (m.face_subfacet(t, f) ? 1 : 0)));
+    }
+  }
+  conflicts /= 2;  // each disagreeing face is met from both sides
+  std::vector<TetId> changed;
+  for (TetId t = 0; t < s.slots(); ++t)
+    if (flag[t] != 2 && flag[t] != m.inside[t]) {
+      m.inside[t] = flag[t];
+      changed.push_back(t);
+    }
+  return changed;
+}
+
 void ConformityTracker::start(const VolumeMesh& m) {
   if (m.missing_subfacets.empty() && m.missing_subsegments.empty()) return;
   // Each listed once by build_initial: no duplicate test needed.

@@ -55,6 +55,26 @@ void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
 // finite tets of `made`, each once.
 std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made);
 
+// Inside flags after a surface insertion whose cavity missed an element D just replaced.
+// commit_point derives each new tet's flag across its old face, toggled when that face is a
+// subfacet; this is right when every subfacet (and subsegment) the surface update replaced
+// lies inside the cavity. In exact arithmetic it does: a point on a subsegment's chord, or
+// on a subfacet's plane inside its circumcircle, is strictly inside every sphere through
+// the element's vertices. With a constructed point a few ulps off (a split on a segment
+// between two facets coplanar within rounding), a flat tet holding the replaced element
+// with a huge circumsphere can test outside the cavity: the element stays a face or edge
+// of T while it is no longer in D, and flags derived across it take the wrong side. The
+// new vertex's star then shows it: across a face through the new vertex the flags differ
+// iff the face is a subfacet, unless the derivation went wrong.
+//   star_flags_consistent  that test on the faces of the star's finite tets;
+//   reflag_all             recomputes every flag by parity from the ghost tets (outside)
+//                          across T's faces, toggling at subfacets; returns the live
+//                          finite tets whose flag changed, and counts in `conflicts` the
+//                          faces where the parity disagrees (T does not separate Ω from the
+//                          rest along D there; 0 when T conforms to D).
+bool star_flags_consistent(const VolumeMesh& m, std::span<const TetId> star);
+std::vector<TetId> reflag_all(VolumeMesh& m, std::size_t& conflicts);
+
 // SeqRefinement's bookkeeping of the above: the elements of D missing from T and the tets
 // made while any is (T conforms iff none is dirty).
 class ConformityTracker {

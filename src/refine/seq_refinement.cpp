@@ -90,7 +90,10 @@ class Refiner {
         continue;
       }
       QueuedTet e;
-      if (!queue_.pop(e)) break;  // no bad tet left
+      if (!queue_.pop(e)) {  // no bad tet left
+        if (final_reflag()) continue;
+        break;
+      }
       if (!WorkQueue::current(s, e) || !m_.is_inside(e.t)) continue;  // reflagged outside
       if (at_cap()) break;
       const std::size_t before = m_.dt.num_points();
@@ -181,6 +184,26 @@ class Refiner {
     return true;
   }
 
+  // Once the queue is empty: every flag by parity from the hull (refine/conformity.hpp), a
+  // net under the per-insertion repair; true when that queued bad tets. Idempotent, so the
+  // loop ends.
+  bool final_reflag() {
+    if (conformity_.broken()) return false;
+    std::size_t conflicts = 0;
+    bool queued = false;
+    for (const TetId t : reflag_all(m_, conflicts))
+      if (m_.is_inside(t) && bad(t)) {
+        queue_.push(m_.dt.store(), t);
+        queued = true;
+      }
+    if (conflicts > 0 && res_.stats.flag_conflicts == 0)
+      unsplit("volume.flags: across " + std::to_string(conflicts) +
+              " faces of T the inside flags cannot follow D (T does not separate the domain "
+              "along its facets there)");
+    res_.stats.flag_conflicts = conflicts;
+    return queued;
+  }
+
   // The budget ended with elements of D missing from T: each is listed.
   void abandon_missing() {
     for (const auto& n : conformity_.abandon(m_)) {
@@ -195,7 +218,15 @@ class Refiner {
   VertexId insert(const Cavity& c, std::uint32_t sv, bool doomed_known = false) {
     if (!doomed_known) conformity_.doomed(m_, c);
     const VertexId v = commit_point(m_, c, sv, star_);
-    if (conformity_.committed(m_, v, star_)) {
+    const bool broke = conformity_.committed(m_, v, star_);
+    // A surface update the cavity did not mirror (refine/conformity.hpp reflag_all).
+    if (sv != kNone && !conformity_.broken() && !star_flags_consistent(m_, star_)) {
+      ++res_.stats.flag_repairs;
+      std::size_t conflicts = 0;
+      for (const TetId t : reflag_all(m_, conflicts))
+        if (m_.is_inside(t)) consider(t);
+    }
+    if (broke) {
       ++res_.stats.conformity_breaks;
       if (o_.audit)
         audited([&] {

@@ -118,6 +118,9 @@ struct RefineStats {
   std::size_t conformity_breaks = 0;    // insertions after which D was not in T
   std::size_t conformity_splits = 0;    // refinements of elements missing from T
   std::size_t conformity_refused = 0;   // ... that a guard refused: T does not conform
+  std::size_t flag_repairs = 0;         // surface insertions whose star's flags disagreed
+                                        // with D: every flag recomputed (conformity.hpp)
+  std::size_t flag_conflicts = 0;       // faces where parity across D disagreed at the end
   double h = 0;  // min over refinements of (l/2, R_f/√2, R_t/2): the largest h the run met
   // Theorem 1's h, a priori (from T_o and the size bounds, before any refinement; see
   // theorem_h in seq_refinement.cpp), when the hypotheses hold (RefineOptions::exact_theory
