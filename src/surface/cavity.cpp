@@ -96,8 +96,16 @@ FacetCavity build_facet_cavity(const SurfaceMesh& m, std::uint32_t facet, const 
       c.boundary.push_back({u, w, nb, s.constrained[i]});
     }
   }
+  // A subsegment on the boundary that p is in the closed diametral ball of, or (a new
+  // vertex inside the facet) on or beyond: Ruppert's remedy for a circumcenter that would
+  // leave the facet. The exact argument of surface/cavity.hpp finds such a p in a diametral
+  // ball when the subsegments are unencroached; outside the theory a facet vertex can
+  // encroach one (an angle above 135 degrees opposite it) and the circumcenter then lies
+  // beyond it but outside its ball.
   for (const CavityEdge& e : c.boundary)
-    if (e.constrained && in_diametral_ball(m.point(e.u), m.point(e.w), p) != Sign::Negative)
+    if (e.constrained &&
+        (in_diametral_ball(m.point(e.u), m.point(e.w), p) != Sign::Negative ||
+         (!split && chart_orient(ch, m.point(e.u), m.point(e.w), p) != Sign::Positive)))
       if (const auto g = m.find_subsegment(e.u, e.w)) c.encroached.push_back(*g);
   std::sort(c.encroached.begin(), c.encroached.end());
   c.encroached.erase(std::unique(c.encroached.begin(), c.encroached.end()), c.encroached.end());

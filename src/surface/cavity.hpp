@@ -18,7 +18,10 @@
 //               unconstrained cavity is star-shaped from p and contains the seed, so the
 //               walk from the seed to p inside it meets a subsegment with conflicting
 //               subfacets on both sides, and two circles through a and b that both hold p
-//               meet only inside the diametral ball of ab (or p is on ab itself).
+//               meet only inside the diametral ball of ab (or p is on ab itself). Outside
+//               the theory a facet vertex may encroach a subsegment, and a circumcenter
+//               can then lie beyond it yet outside its ball: a boundary subsegment with p
+//               on or beyond it (chart_orient, exact) counts as encroached too.
 //   star shape  p strictly left of every boundary edge in the chart, each vertex starting
 //               and ending at most one boundary edge, one loop (a path from b to a for a
 //               boundary split), every vertex of the cavity on it. Then the fan from p is a

@@ -10,8 +10,10 @@
 #include <gmpxx.h>
 
 #include <cmath>
+#include <optional>
 
 #include "geom/construct.hpp"
+#include "geom/encroach.hpp"
 #include "geom/predicates.hpp"
 #include "support/plc_fixtures.hpp"
 #include "support/surface_fixtures.hpp"
@@ -209,6 +211,30 @@ void flip_by_hand(SurfaceMesh& m, std::uint32_t t, int i) {
 }
 
 // Planted corruptions, one per invariant family.
+TEST(SurfaceOps, CircumcenterBeyondASubsegmentSplitsIt) {
+  // A triangular prism whose base has a 152-degree angle opposite the edge (0,0)-(4,0): the
+  // base's circumcenter lies beyond that edge and outside its diametral ball (the apex
+  // encroaches the edge: outside the theory). Ruppert's remedy, not a rejected cavity.
+  SurfaceMesh m = build_surface(analyze(prism({{0, 0}, {4, 0}, {2, 0.5}}, 0, 1)).domain);
+  std::optional<std::uint32_t> base;
+  for (std::uint32_t t = 0; t < m.subfacets().size(); ++t) {
+    const Subfacet& x = m.subfacet(t);
+    if (x.alive && m.point(x.v[0])[2] == 0 && m.point(x.v[1])[2] == 0 &&
+        m.point(x.v[2])[2] == 0)
+      base = t;
+  }
+  ASSERT_TRUE(base);
+  const Point p = subfacet_circumcenter(m, *base);
+  ASSERT_LT(p[1], 0.0);  // beyond the edge
+  ASSERT_EQ(in_diametral_ball({0, 0, 0}, {4, 0, 0}, p), Sign::Negative);
+  const InsertResult r = insert_circumcenter(m, *base);
+  ASSERT_EQ(r.outcome, InsertOutcome::Encroaches);
+  ASSERT_EQ(r.encroached.size(), 1u);
+  const Subsegment& g = m.subsegment(r.encroached[0]);
+  EXPECT_EQ(m.point(g.v[0])[1] + m.point(g.v[1])[1], 0.0);  // the edge on y = 0
+  EXPECT_EQ(m.point(g.v[0])[2] + m.point(g.v[1])[2], 0.0);
+}
+
 TEST(SurfaceAudit, CatchesCorruptions) {
   const DomainAnalysis an = analyze(read_data("box.poly"));
   const SurfaceMesh good = init_surface(an).mesh;
