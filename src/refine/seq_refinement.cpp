@@ -184,11 +184,15 @@ class Refiner {
     return true;
   }
 
-  // Once the queue is empty: every flag by parity from the hull (refine/conformity.hpp), a
-  // net under the per-insertion repair; true when that queued bad tets. Idempotent, so the
-  // loop ends.
+  // Once the queue is empty, in a run that had to repair flags or restore conformity:
+  // every flag by parity from the hull (refine/conformity.hpp), a net under the
+  // per-insertion repair; true when that queued bad tets. Idempotent, so the loop ends.
+  // Runs without either keep every flag by construction (commit_point with the star
+  // checked after each surface insertion) and skip this O(n) pass.
   bool final_reflag() {
-    if (conformity_.broken()) return false;
+    if (conformity_.broken() ||
+        res_.stats.flag_repairs + res_.stats.conformity_breaks == 0)
+      return false;
     std::size_t conflicts = 0;
     bool queued = false;
     for (const TetId t : reflag_all(m_, conflicts))
