@@ -28,8 +28,6 @@
 
 namespace pdr::domain::detail {
 
-namespace {
-
 std::string number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", x);
@@ -44,6 +42,8 @@ std::vector<std::uint32_t> face_vertices(const FacetPolys& fp) {
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
   return verts;
 }
+
+namespace {
 
 std::vector<std::uint32_t> merged(const std::vector<std::uint32_t>& a,
                                   const std::vector<std::uint32_t>& b) {

@@ -18,23 +18,13 @@ namespace pdr::domain::detail {
 
 namespace {
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
-
 void triangulate_face(const FacetPolys& fp, std::size_t f, PlcDomain& dom) {
   const Plc& plc = dom.plc;
   const PlcFacet& facet = plc.facets[f];
   auto here = [&](const std::string& m) { fail(plc, facet.line, m); };
   const double tol = dom.options.planarity_tolerance;
 
-  std::vector<std::uint32_t> verts(fp.points);
-  for (const auto& loop : fp.loops) verts.insert(verts.end(), loop.begin(), loop.end());
-  for (const auto& s : fp.segs) verts.insert(verts.end(), s.begin(), s.end());
-  std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  const std::vector<std::uint32_t> verts = face_vertices(fp);
   DomainFacet& F = dom.facets[f];  // plane fitted by step 4a (domain/coplanar.cpp)
 
   std::unordered_map<std::uint32_t, std::uint32_t> local;

@@ -30,6 +30,10 @@ void check_points(const Plc& plc);
 std::vector<FacetPolys> check_polygons(const Plc& plc);
 // Step 3 (domain/split.cpp).
 void split_edges(const Plc& plc, std::vector<FacetPolys>& polys);
+// "1.5e-10": a figure in a diagnostic (domain/coplanar.cpp).
+std::string number(double x);
+// A face's vertices (its loops, 2-vertex polygons and points), sorted, each once.
+std::vector<std::uint32_t> face_vertices(const FacetPolys& fp);
 // Step 4a (domain/coplanar.cpp): fills facets[f].plane, .plane_group, .is_face;
 // tolerance_facets.
 void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom);
