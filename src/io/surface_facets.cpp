@@ -34,9 +34,12 @@ int projection_axis(const SurfaceTopology& t, std::size_t f) {
   const double n[3] = {std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz),
                        std::fabs(ux * vy - uy * vx)};
   const int axis = n[0] >= n[1] && n[0] >= n[2] ? 0 : n[1] >= n[2] ? 1 : 2;
-  if (orient_along(o, p, q, axis) == Sign::Zero)
-    throw std::logic_error("surface_facets: a face's plane triple is collinear");
-  return axis;
+  if (orient_along(o, p, q, axis) != Sign::Zero) return axis;
+  // The double normal underflowed or overflowed (coordinates near the ends of the double
+  // range): any axis along which the exact projection turns will do.
+  for (int k = 0; k < 3; ++k)
+    if (orient_along(o, p, q, k) != Sign::Zero) return k;
+  throw std::logic_error("surface_facets: a face's plane triple is collinear");
 }
 
 // The turn at the lexicographically smallest corner of a closed polygon projected along

@@ -129,6 +129,31 @@ TEST(Surface, FoldsBeyondToleranceStayApart) {
   EXPECT_EQ(plc.facets.size(), 3u + 6u);
 }
 
+TEST(Surface, SubnormalCoordinatesReadOrFailAsInput) {
+  // A box whose corners carry subnormal and huge coordinates (a fuzzer's find): the double
+  // normal of a face's plane triple underflows, and step 5's projection axis must still be
+  // one along which the exact projection turns. Reading gives a PLC or an InputError,
+  // never a logic_error.
+  ScratchDir dir;
+  Shape s = box_triangles();
+  s.points = {{6.397087343208204e-308, 0, 0}, {0.0002288818359375, 0, 0},
+              {9.713726e-318, 1, 4.0474e-320}, {0, 1, 0},
+              {0, 6.80564733841877e+38, 1},    {1, 0, 1},
+              {1, 1, 1},                       {2.781342323134e-309, 1, 1}};
+  s.faces = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+             {1, 2, 6}, {1, 6, 5}, {2, 3, 6}, {3, 7, 6}, {0, 7, 3}, {0, 4, 7}};
+  try {
+    (void)read_off_text(dir, off_text(s));
+  } catch (const InputError&) {
+    // the answer to an invalid surface
+  }
+  // The unit box with subnormal offsets on its x = 0 side reads as the box of 6 sides.
+  Shape box = box_triangles();
+  for (Point& p : box.points)
+    if (p[0] == 0) p[0] = p[1] == p[2] ? 5e-324 : 0;
+  EXPECT_EQ(read_off_text(dir, off_text(box)).facets.size(), 6u);
+}
+
 TEST(Surface, RingBecomesAFacetWithAHole) {
   ScratchDir dir;
   const Plc plc = read_off_text(dir, off_text(step()));
