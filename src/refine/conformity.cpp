@@ -2,6 +2,7 @@
 #include "refine/conformity.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "mesh/tables.hpp"
 
@@ -23,17 +24,27 @@ bool on_boundary(const TetStore& s, const Cavity& c, VertexId a, VertexId b) {
   return false;
 }
 
+// Ids are reused after splits: an entry with the same id and other vertices was a former
+// element, gone from D (next() would drop it as stale), so it now stands for this one.
 void add_subfacet(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
-  for (const Encroached& e : out.subfacets)
-    if (e.id == id) return;
-  out.subfacets.push_back({id, m.surf.subfacet(id).v, kNone, kNoTet});
+  const std::array<std::uint32_t, 3> v = m.surf.subfacet(id).v;
+  for (Encroached& e : out.subfacets)
+    if (e.id == id) {
+      e.v = v;
+      return;
+    }
+  out.subfacets.push_back({id, v, kNone, kNoTet});
 }
 
 void add_subsegment(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
-  for (const Encroached& e : out.subsegments)
-    if (e.id == id) return;
   const Subsegment& x = m.surf.subsegment(id);
-  out.subsegments.push_back({id, {x.v[0], x.v[1], 0}, kNone, kNoTet});
+  const std::array<std::uint32_t, 3> v{x.v[0], x.v[1], 0};
+  for (Encroached& e : out.subsegments)
+    if (e.id == id) {
+      e.v = v;
+      return;
+    }
+  out.subsegments.push_back({id, v, kNone, kNoTet});
 }
 
 }  // namespace

@@ -26,8 +26,9 @@
 //                    faces (refine/volume_mesh.hpp commit_point) can be wrong; they are
 //                    recomputed once T conforms again, by parity across subfacets from
 //                    the tets whose flags predate the break.
-// Elements that stay missing (a guard refused to split them) make the output
-// non-conforming there; the exact checker reports it and pdr mesh exits 3 with the
+// The protected length (refine/split.hpp) does not hold these refinements: a finer mesh
+// near a sharp corner is a cost, a non-conforming one is a bug. Elements that stay missing
+// (the vertex cap stopped their refinement) make the output non-conforming there; the exact checker reports it and pdr mesh exits 3 with the
 // reasons (refine/seq_refinement.hpp unsplit).
 #pragma once
 

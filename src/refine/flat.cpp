@@ -8,8 +8,8 @@ namespace pdr::refine {
 
 namespace {
 
-// Rule 2, and rule 1 too when `flat`.
-std::optional<std::uint32_t> pick(const VolumeMesh& m, TetId t, bool flat) {
+// Rule 2 when `encroached`, rule 1 when `flat`.
+std::optional<std::uint32_t> pick(const VolumeMesh& m, TetId t, bool flat, bool encroached) {
   const TetStore& s = m.dt.store();
   std::optional<std::uint32_t> best;
   double best_r2 = -1;
@@ -27,7 +27,7 @@ std::optional<std::uint32_t> pick(const VolumeMesh& m, TetId t, bool flat) {
       for (const std::uint32_t y : m.surf.vertex_subfacets(v))
         hit = hit || (m.surf.subfacet(y).alive &&
                       m.surf.facets[m.surf.subfacet(y).facet].plane_group == plane);
-    hit = hit || in_equatorial_ball(a, b, c, m.dt.point(apex)) == Sign::Positive;
+    hit = hit || (encroached && in_equatorial_ball(a, b, c, m.dt.point(apex)) == Sign::Positive);
     if (!hit) continue;
     const double r2 = construct::triangle_circumradius2(a, b, c);  // a choice only
     if (r2 > best_r2) best_r2 = r2, best = *sf;
@@ -38,11 +38,15 @@ std::optional<std::uint32_t> pick(const VolumeMesh& m, TetId t, bool flat) {
 }  // namespace
 
 std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t) {
-  return pick(m, t, true);
+  return pick(m, t, true, true);
 }
 
 std::optional<std::uint32_t> encroached_subfacet_face(const VolumeMesh& m, TetId t) {
-  return pick(m, t, false);
+  return pick(m, t, false, true);
+}
+
+std::optional<std::uint32_t> flat_subfacet_face(const VolumeMesh& m, TetId t) {
+  return pick(m, t, true, false);
 }
 
 }  // namespace pdr::refine

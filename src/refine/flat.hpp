@@ -26,6 +26,15 @@
 // subfacet is gone. Refinement repairs (2) at once, within each insertion step and before
 // its Lemma 1 audit (refine/seq_refinement.cpp), and through the bad-tet queue as a fallback. Each
 // step inserts a vertex; the refinement's vertex cap bounds them.
+// The protected length (refine/split.hpp) does not stop a repair of (1): it ends the
+// encroachment cascade between features that meet at a small angle, a geometric cause,
+// while a flat tet is rounding's (a near-cocircular quadruple of one plane). Near an acute
+// vertex the quadruple's circumcenter may encroach a subsegment already at the protected
+// length; refusing that split left the sliver in the mesh, inside the domain with two
+// faces on the facet that are not subfacets (a rotated torus of triangle facets:
+// tests/regress/outside-*torus*). The repair's splits keep the concentric shells. (2)
+// can be geometric too (subfacets of two facets at a sharp dihedral encroach each other
+// at every scale), so the floor applies to it.
 #pragma once
 
 #include <cstdint>
@@ -42,5 +51,7 @@ namespace pdr::refine {
 std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t);
 // The same for (2) alone.
 std::optional<std::uint32_t> encroached_subfacet_face(const VolumeMesh& m, TetId t);
+// The same for (1) alone: t is a flat tet on a facet (or coplanar group).
+std::optional<std::uint32_t> flat_subfacet_face(const VolumeMesh& m, TetId t);
 
 }  // namespace pdr::refine

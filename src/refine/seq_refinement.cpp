@@ -168,9 +168,9 @@ class Refiner {
       ++res_.stats.conformity_splits;
       const std::size_t before = m_.dt.num_points();
       if (n->subsegment) {
-        if (auto why = split(n->e.id, kNoTet)) unsplit(std::move(*why));
+        if (auto why = split(n->e.id, kNoTet, /*below_floor=*/true)) unsplit(std::move(*why));
       } else {
-        refine_subfacet(n->e.id, kNoTet, kNoTet);
+        refine_subfacet(n->e.id, kNoTet, kNoTet, /*below_floor=*/true);
       }
       if (m_.dt.num_points() == before)
         ++res_.stats.conformity_refused;
@@ -379,8 +379,8 @@ class Refiner {
   }
 
   // Fig. 2 Refine(s) (refine/split.hpp: where); the reason when the guard refuses.
-  std::optional<std::string> split(std::uint32_t sub, TetId hint) {
-    const SplitGuard::Plan where = guard_.plan(m_.surf, sub);
+  std::optional<std::string> split(std::uint32_t sub, TetId hint, bool below_floor = false) {
+    const SplitGuard::Plan where = guard_.plan(m_.surf, sub, below_floor);
     if (!where.ok) return where.reason;
     const Subsegment& x = m_.surf.subsegment(sub);
     const Point a = m_.surf.point(x.v[0]), b = m_.surf.point(x.v[1]);
@@ -414,14 +414,15 @@ class Refiner {
 
   // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t (kNoTet: f is encroached);
   // `hint` locates its circumcenter.
-  void refine_subfacet(std::uint32_t f, TetId hint, TetId t) {
-    if (std::string why = guard_.refuse_subfacet(m_.surf, f); !why.empty()) {
+  void refine_subfacet(std::uint32_t f, TetId hint, TetId t, bool below_floor = false) {
+    if (std::string why = below_floor ? std::string() : guard_.refuse_subfacet(m_.surf, f);
+        !why.empty()) {
       give_up(t, std::move(why));
       return;
     }
     const surface::FacetCavity fc = plan_circumcenter(m_.surf, f);
     if (fc.status == surface::CavityStatus::Encroaches && !fc.encroached.empty()) {
-      if (auto why = split(fc.encroached.front(), hint)) give_up(t, std::move(*why));
+      if (auto why = split(fc.encroached.front(), hint, below_floor)) give_up(t, std::move(*why));
       return;
     }
     if (fc.status != surface::CavityStatus::Ok) {
@@ -436,7 +437,7 @@ class Refiner {
       return;
     }
     if (const auto s = closure_encroached_subsegment(m_, {cav2_.conflict, cav2_.ring}, fc.p)) {
-      if (auto why = split(*s, hint)) give_up(t, std::move(*why));
+      if (auto why = split(*s, hint, below_floor)) give_up(t, std::move(*why));
       return;
     }
     const Subfacet& x = m_.surf.subfacet(f);
@@ -464,6 +465,10 @@ class Refiner {
   }
 
   void refine_tet(TetId t) {
+    if (const auto f = flat_subfacet_face(m_, t)) {  // issue #3: refine/flat.hpp rule 1
+      refine_subfacet(*f, t, t, /*below_floor=*/true);
+      return;
+    }
     if (const auto f = subfacet_to_refine(m_, t)) {  // issue #3: refine/flat.hpp
       refine_subfacet(*f, t, t);
       return;

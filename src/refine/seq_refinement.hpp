@@ -35,7 +35,7 @@
 //   - protected length (resolution / 64, the resolution being the smallest of d/2, L/2,
 //     cbrt(V)): on segments and facets at an acute vertex nothing is split below it; the
 //     tet (or encroached element) whose refinement needed that split is refused, with the
-//     reason;
+//     reason (repairs of rounding, refine/flat.hpp, and of conformity are not held);
 //   - the vertex cap (RefineOptions::max_vertices, else derived from the input size,
 //     the domain's bounding box and the resolution) stops the loop with stop_reason set.
 // Conformity (refine/conformity.hpp): an element of D that an insertion would take out of

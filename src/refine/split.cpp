@@ -71,7 +71,8 @@ double nearest_power_of_two(double x) {
 
 }  // namespace
 
-SplitGuard::Plan SplitGuard::plan(const surface::SurfaceMesh& m, std::uint32_t s) const {
+SplitGuard::Plan SplitGuard::plan(const surface::SurfaceMesh& m, std::uint32_t s,
+                                  bool below_floor) const {
   const surface::Subsegment& g = m.subsegment(s);
   const Point &a = m.point(g.v[0]), &b = m.point(g.v[1]);
   Plan r;
@@ -87,7 +88,7 @@ SplitGuard::Plan SplitGuard::plan(const surface::SurfaceMesh& m, std::uint32_t s
     t = sa ? from / l : 1 - from / l;
   }
   const double piece = std::min(t, 1 - t) * l;
-  if (piece < protected_) {
+  if (piece < protected_ && !below_floor) {
     std::ostringstream os;
     os.precision(6);
     os << "refine.protected: splitting subsegment (" << g.v[0] << ", " << g.v[1] << ") of "

@@ -17,7 +17,10 @@
 //                   below the protected length on a guarded facet (one containing a
 //                   guarded segment) is not refined (refuse_subfacet): near a sharp
 //                   dihedral the subfacets of the two facets encroach each other at every
-//                   scale, and this floor ends that cascade.
+//                   scale, and this floor ends that cascade. Rounding repairs (refine/
+//                   flat.hpp rule 1: a flat tet on a facet) and conformity repairs
+//                   (refine/conformity.hpp: an element of D missing from T) are not held
+//                   by it (plan's below_floor); the vertex cap bounds them.
 // For an admissible domain the guard is empty: every split is the midpoint, as Lemma 1
 // needs. Lengths and the split point are floating point: they say where, not whether; the
 // point is a + t (b - a), on the segment up to rounding like the midpoint.
@@ -46,7 +49,10 @@ class SplitGuard {
     Point p{};           // where (ok)
     std::string reason;  // why not (!ok)
   };
-  Plan plan(const surface::SurfaceMesh& m, std::uint32_t subsegment) const;
+  // `below_floor`: the split repairs rounding or conformity and may go below the
+  // protected length (shells still apply).
+  Plan plan(const surface::SurfaceMesh& m, std::uint32_t subsegment,
+            bool below_floor = false) const;
   // Why subfacet f may not be refined, or empty.
   std::string refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f) const;
   bool active() const { return !acute_.empty(); }

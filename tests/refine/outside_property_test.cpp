@@ -120,9 +120,7 @@ TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
 
 // Replays of tests/regress/outside-*.poly and outside-*.off, one test each; a known open bug
 // is registered DISABLED_ with the bug named in its file.
-const std::vector<std::string> kKnownBugs = {"outside-rotated-tee-facets-uncovered.poly",
-                                             "outside-thin-torus-triangle-facets.poly",
-                                             "outside-torus-triangle-facets-star.poly"};
+const std::vector<std::string> kKnownBugs = {};
 
 [[maybe_unused]] const bool kReplaysRegistered =
     register_replays("OutsideRegress", "outside-", kKnownBugs, [](const std::string& path) {
