@@ -116,4 +116,33 @@ rc::Gen<Plc> gen_outside_domain(double min_corner_deg) {
   });
 }
 
+Plc torus_of_triangles(int n, int m, double r) {
+  constexpr double kRing = 3;
+  std::vector<Point> p;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double t = 2 * std::numbers::pi * i / n, u = 2 * std::numbers::pi * j / m;
+      const double w = kRing + r * std::cos(u);
+      p.push_back({w * std::cos(t), w * std::sin(t), r * std::sin(u)});
+    }
+  const auto id = [m, n](int i, int j) { return static_cast<std::uint32_t>((i % n) * m + j % m); };
+  std::vector<FacetSpec> f;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      f.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+      f.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+    }
+  return make_plc(p, f);
+}
+
+rc::Gen<Plc> gen_rotated_torus_of_triangles() {
+  return rc::gen::exec([] {
+    const int n = *rc::gen::inRange(6, 17), m = *rc::gen::inRange(4, 9);
+    const double r = 0.45 + *rc::gen::inRange(0, 106) / 100.0;
+    const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
+    const double a = angle(), b = angle(), c = angle();
+    return rotated(torus_of_triangles(n, m, r), a, b, c);
+  });
+}
+
 }  // namespace pdr::test

@@ -37,4 +37,12 @@ Plc rotated(Plc plc, double a, double b, double c);
 
 rc::Gen<Plc> gen_outside_domain(double min_corner_deg);
 
+// A torus of n x m planar quads (ring radius 3, tube radius r), each quad given as two
+// triangle facets, as a triangulated surface from a CAD or scanning tool writes it: facets
+// across each diagonal are coplanar (exactly before a rotation, within rounding after),
+// corners of the triangles 7 to 80 degrees, every input vertex acute.
+Plc torus_of_triangles(int n, int m, double r);
+// Such tori, n in [6, 16], m in [4, 8], r in [0.45, 1.5], turned by a random rotation.
+rc::Gen<Plc> gen_rotated_torus_of_triangles();
+
 }  // namespace pdr::test
