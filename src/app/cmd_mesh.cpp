@@ -15,6 +15,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <map>
 
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
@@ -114,6 +115,17 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   c->add_flag("--json", a.json, "Print the summary as one JSON object");
   c->add_option("--seed", a.seed, "Seed of the initial insertion order");
   c->add_option("--max-vertices", a.options.max_vertices, "Vertex cap (0: derived)");
+  c->add_option("--surface-sizing", a.surface_sizing,
+                "Initial surface mesh: uniform (paper 2.1, global d), graded (each segment "
+                "and facet by its distance to unrelated components), auto (graded when "
+                "estimated 4x smaller)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, surface::SurfaceSizing>{
+              {"auto", surface::SurfaceSizing::Auto},
+              {"uniform", surface::SurfaceSizing::Uniform},
+              {"graded", surface::SurfaceSizing::Graded}},
+          CLI::ignore_case))
+      ->option_text("auto|uniform|graded (default auto)");
   c->add_option("--initial-tets", a.initial_tets,
                 "Under mpirun: refine the interior sequentially to about K tets before "
                 "distributing (0: automatic)")
@@ -153,7 +165,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   progress.phase("surface");
   surface::SurfaceOptions so;
   so.max_vertices = args.options.max_vertices;  // --max-vertices bounds every phase
+  so.sizing = args.surface_sizing;
   surface::SurfaceInit si = surface::init_surface(an, so);
+  summary.set("surface_sizing", si.stats.graded ? "graded" : "uniform");
   summary.set("surface_vertices", si.mesh.vertex_count());
   summary.set("subfacets", si.mesh.live_subfacets());
   timer.lap("surface");

@@ -12,6 +12,7 @@
 #include "mesh/mesh_data.hpp"
 #include "mesh/plc.hpp"
 #include "refine/seq_refinement.hpp"
+#include "surface/init.hpp"
 
 namespace pdr::app {
 
@@ -51,6 +52,7 @@ struct MeshArgs {
   unsigned threads = 2;
   std::size_t initial_tets = 0;        // mpirun: M_o's interior size (0: automatic)
   std::uint64_t inject_latency_us = 0; // mpirun: each message held this long
+  surface::SurfaceSizing surface_sizing = surface::SurfaceSizing::Auto;  // surface/init.hpp
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
 int run_mesh(const MeshArgs& args);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "domain/bvh.hpp"
 
@@ -130,6 +131,150 @@ FeatureSize feature_size(const PlcDomain& dom) {
     }
   }
   return best.result();
+}
+
+namespace {
+
+bool facets_share(const PlcDomain& dom, std::uint32_t f, std::uint32_t g) {
+  const auto &a = dom.facets[f].vertices, &b = dom.facets[g].vertices;
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (a[i] == b[j]) return true;
+    a[i] < b[j] ? ++i : ++j;
+  }
+  return false;
+}
+
+bool facet_has_segment_end(const PlcDomain& dom, std::uint32_t f, const DomainSegment& s) {
+  return facet_has(dom, f, s.a) || facet_has(dom, f, s.b);
+}
+
+// The squared distance from segment s, or from triangle t of facet f (s = kNone), to the
+// primitive `o` when o belongs to a component unrelated to the query's; infinity otherwise.
+constexpr std::uint32_t kNoSeg = 0xFFFFFFFFu;
+double unrelated_dist2(const PlcDomain& dom, std::uint32_t s, std::uint32_t f, std::uint32_t t,
+                       const Prim& o) {
+  const std::vector<Point>& pts = dom.plc.points;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (s != kNoSeg) {
+    const DomainSegment& q = dom.segments[s];
+    const Point &a = pts[q.a], &b = pts[q.b];
+    switch (o.kind) {
+      case ComponentKind::Vertex:
+        return o.id == q.a || o.id == q.b ? kInf : dist2_point_segment(pts[o.id], a, b);
+      case ComponentKind::Segment: {
+        const DomainSegment& r = dom.segments[o.id];
+        return segments_share(q, r) ? kInf : dist2_segment_segment(a, b, pts[r.a], pts[r.b]);
+      }
+      case ComponentKind::Facet: {
+        if (facet_has_segment_end(dom, o.id, q)) return kInf;
+        const auto& v = dom.facets[o.id].tris[o.tri].v;
+        return dist2_segment_triangle(a, b, pts[v[0]], pts[v[1]], pts[v[2]]);
+      }
+    }
+    return kInf;
+  }
+  const auto& w = dom.facets[f].tris[t].v;
+  const Point &a = pts[w[0]], &b = pts[w[1]], &c = pts[w[2]];
+  switch (o.kind) {
+    case ComponentKind::Vertex:
+      return facet_has(dom, f, o.id) ? kInf : dist2_point_triangle(pts[o.id], a, b, c);
+    case ComponentKind::Segment: {
+      const DomainSegment& r = dom.segments[o.id];
+      return facet_has_segment_end(dom, f, r) ? kInf
+                                              : dist2_segment_triangle(pts[r.a], pts[r.b], a, b, c);
+    }
+    case ComponentKind::Facet: {
+      if (o.id == f || facets_share(dom, f, o.id)) return kInf;
+      const auto& v = dom.facets[o.id].tris[o.tri].v;
+      return dist2_triangle_triangle(a, b, c, pts[v[0]], pts[v[1]], pts[v[2]]);
+    }
+  }
+  return kInf;
+}
+
+}  // namespace
+
+LocalFeatureSizes local_feature_sizes(const PlcDomain& dom) {
+  const std::vector<Point>& pts = dom.plc.points;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<Prim> prims;
+  std::vector<Box> boxes;
+  for (std::uint32_t v = 0; v < pts.size(); ++v)
+    if (dom.on_boundary[v]) {
+      prims.push_back({ComponentKind::Vertex, v, 0});
+      boxes.emplace_back().add(pts[v]);
+    }
+  for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
+    prims.push_back({ComponentKind::Segment, s, 0});
+    Box& b = boxes.emplace_back();
+    b.add(pts[dom.segments[s].a]);
+    b.add(pts[dom.segments[s].b]);
+  }
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
+    for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t) {
+      prims.push_back({ComponentKind::Facet, f, t});
+      Box& b = boxes.emplace_back();
+      for (std::uint32_t v : dom.facets[f].tris[t].v) b.add(pts[v]);
+    }
+  const Bvh bvh(boxes);
+  // The nearest unrelated primitive to the query box, by branch and bound.
+  auto nearest = [&](const Box& qb, std::uint32_t s, std::uint32_t f, std::uint32_t t,
+                     double best) {
+    bvh.branch_and_bound([&](const Box& b) { return box_gap2(qb, b); }, [&] { return best; },
+                         [&](std::uint32_t j) {
+                           best = std::min(best, unrelated_dist2(dom, s, f, t, prims[j]));
+                         });
+    return best;
+  };
+  LocalFeatureSizes out;
+  out.segment_d.assign(dom.segments.size(), kInf);
+  out.facet_d.assign(dom.facets.size(), kInf);
+  for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
+    Box qb;
+    qb.add(pts[dom.segments[s].a]);
+    qb.add(pts[dom.segments[s].b]);
+    out.segment_d[s] = std::sqrt(nearest(qb, s, 0, 0, kInf) / 2);
+  }
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f) {
+    if (!dom.facets[f].is_face) continue;
+    double best = kInf;
+    for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t) {
+      Box qb;
+      for (std::uint32_t v : dom.facets[f].tris[t].v) qb.add(pts[v]);
+      best = nearest(qb, kNoSeg, f, t, best);
+    }
+    out.facet_d[f] = std::sqrt(best / 2);
+  }
+  return out;
+}
+
+LocalFeatureSizes local_feature_sizes_brute(const PlcDomain& dom) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<Prim> prims;
+  for (std::uint32_t v = 0; v < dom.plc.points.size(); ++v)
+    if (dom.on_boundary[v]) prims.push_back({ComponentKind::Vertex, v, 0});
+  for (std::uint32_t s = 0; s < dom.segments.size(); ++s)
+    prims.push_back({ComponentKind::Segment, s, 0});
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
+    for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t)
+      prims.push_back({ComponentKind::Facet, f, t});
+  LocalFeatureSizes out;
+  out.segment_d.assign(dom.segments.size(), kInf);
+  out.facet_d.assign(dom.facets.size(), kInf);
+  for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
+    double best = kInf;
+    for (const Prim& o : prims) best = std::min(best, unrelated_dist2(dom, s, 0, 0, o));
+    out.segment_d[s] = std::sqrt(best / 2);
+  }
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f) {
+    if (!dom.facets[f].is_face) continue;
+    double best = kInf;
+    for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t)
+      for (const Prim& o : prims) best = std::min(best, unrelated_dist2(dom, kNoSeg, f, t, o));
+    out.facet_d[f] = std::sqrt(best / 2);
+  }
+  return out;
 }
 
 FeatureSize feature_size_brute(const PlcDomain& dom) {

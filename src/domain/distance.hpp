@@ -35,6 +35,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "domain/domain.hpp"
 #include "geom/point.hpp"
@@ -54,6 +55,21 @@ struct FeatureSize {
 
 FeatureSize feature_size(const PlcDomain& dom);
 FeatureSize feature_size_brute(const PlcDomain& dom);
+
+// The distance of paper §2.1 per component: for each segment and each face, the minimum
+// distance to the components unrelated to it (sharing no vertex with it), times 1/sqrt(2)
+// (infinity when none is unrelated). The minimum over all of them is feature_size's d.
+// The graded initial surface mesh (surface/init.hpp) sizes each segment and facet by it.
+// Branch and bound over the same hierarchy, from each segment and each facet triangle,
+// with the exact distances between the component and the primitives of the unrelated
+// ones (no reduction to boundaries: each query is against whole triangles); floating
+// point, like d.
+struct LocalFeatureSizes {
+  std::vector<double> segment_d;  // per DomainSegment
+  std::vector<double> facet_d;    // per DomainFacet (infinity for a facet that is no face)
+};
+LocalFeatureSizes local_feature_sizes(const PlcDomain& dom);
+LocalFeatureSizes local_feature_sizes_brute(const PlcDomain& dom);
 
 double dist2_point_point(const Point& p, const Point& q);
 double dist2_point_segment(const Point& p, const Point& a, const Point& b);

@@ -73,11 +73,20 @@ class Refiner {
     // start, the base case of Lemma 1). Rounded input can miss either by an ulp (a vertex a
     // hair inside an equatorial ball it should lie on); the repairs that follow are no step
     // of Fig. 2, and the a-priori bound is then not claimed.
+    // Admissible domains: what T_o has encroached (rounding, or a graded D_o between
+    // related elements of different sizes, surface/init.hpp) is refined first, as the
+    // guards' pass does outside the theory.
+    EncroachedLists at_start;
+    if (o_.admissible) encroached_at_start(at_start);
     if (o_.admissible && o_.exact_theory && m_.missing_subfacets.empty() &&
-        m_.missing_subsegments.empty() && !encroached_at_start())
+        m_.missing_subsegments.empty() && at_start.subsegments.empty() &&
+        at_start.subfacets.empty())
       res_.stats.h_theorem = theorem_h(m_, o_);
     const TetStore& s = m_.dt.store();
-    if (!o_.admissible) start_guards();
+    if (!o_.admissible)
+      start_guards();
+    else
+      enc_ = std::move(at_start);
     if (!m_.missing_subfacets.empty() || !m_.missing_subsegments.empty()) {
       ++res_.stats.conformity_breaks;  // T_o (refine/initial.hpp)
       conformity_.start(m_);
@@ -328,14 +337,12 @@ class Refiner {
   }
 
   // Some subsegment or subfacet of D has a vertex strictly inside its ball in T_o.
-  bool encroached_at_start() const {
+  void encroached_at_start(EncroachedLists& found) const {
     const TetStore& s = m_.dt.store();
     std::vector<TetId> all;
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t)) all.push_back(t);
-    EncroachedLists found;
     find_encroached(m_, all, found);
-    return !found.subsegments.empty() || !found.subfacets.empty();
   }
 
   // Rounding repair at step_[i]'s vertex (issue #3, refine/flat.hpp rule 2): refines a

@@ -9,6 +9,7 @@
 #include <deque>
 #include <limits>
 
+#include "domain/distance.hpp"
 #include "surface/build.hpp"
 #include "surface/encroach.hpp"
 #include "surface/insert.hpp"
@@ -35,14 +36,32 @@ std::string number(double x) {
   return buf;
 }
 
-// The guard of surface/init.hpp (a resource limit computed in floating point).
-std::size_t vertex_cap(const SurfaceMesh& m, double d, const SurfaceOptions& o) {
-  double length = 0, area = 0;
-  for (const SurfaceSegment& s : m.segments) length += distance(m.point(s.a), m.point(s.b));
+// The estimate of surface/init.hpp for the sizes m holds (segment_size, facet_size).
+double size_estimate(const SurfaceMesh& m) {
+  double n = 0;
+  for (std::uint32_t s = 0; s < m.segments.size(); ++s)
+    n += distance(m.point(m.segments[s].a), m.point(m.segments[s].b)) / m.segment_size(s);
   for (const Subfacet& t : m.subfacets())
-    if (t.alive) area += triangle_area(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]));
-  const double derived =
-      static_cast<double>(m.vertex_count()) + 16 * (length / d + area / (d * d)) + 1024;
+    if (t.alive) {
+      const double h = m.facet_size(t.facet);
+      n += triangle_area(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2])) / (h * h);
+    }
+  return n;
+}
+
+// Graded sizes (surface/init.hpp): d_F per facet, min(d_S, d_F of its facets) per segment.
+void set_graded_sizes(SurfaceMesh& m, const domain::PlcDomain& dom) {
+  const domain::LocalFeatureSizes local = domain::local_feature_sizes(dom);
+  m.facet_d = local.facet_d;
+  m.segment_d = local.segment_d;
+  for (std::uint32_t s = 0; s < dom.segments.size(); ++s)
+    for (const std::uint32_t f : dom.segments[s].facets)
+      if (dom.facets[f].is_face) m.segment_d[s] = std::min(m.segment_d[s], m.facet_d[f]);
+}
+
+// The guard of surface/init.hpp (a resource limit computed in floating point).
+std::size_t vertex_cap(const SurfaceMesh& m, double estimate, const SurfaceOptions& o) {
+  const double derived = static_cast<double>(m.vertex_count()) + 16 * estimate + 1024;
   double limit = static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2);
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   if (pages > 0 && page > 0)
@@ -64,7 +83,7 @@ class Initializer {
     while (!queue.empty()) {
       const std::uint32_t s = queue.front();
       queue.pop_front();
-      if (!subsegment_too_long(m_, s, d_)) continue;
+      if (!subsegment_too_long(m_, s, m_.segment_size(m_.subsegment(s).segment))) continue;
       guard(m_.segment_name(m_.subsegment(s).segment) + " (step 1, segment refinement)");
       const SplitResult r = split_subsegment(m_, s);
       ++st_.segment_splits;
@@ -80,7 +99,7 @@ class Initializer {
       const auto [t, v] = queue_.front();
       queue_.pop_front();
       const Subfacet& s = m_.subfacet(t);
-      if (!s.alive || s.v != v || !subfacet_too_large(m_, t, d_)) continue;
+      if (!s.alive || s.v != v || !subfacet_too_large(m_, t, m_.facet_size(s.facet))) continue;
       const std::uint32_t f = s.facet;
       guard(m_.facet_name(f) + " (step 2, facet refinement)");
       const InsertResult r = insert_circumcenter(m_, t);
@@ -133,7 +152,17 @@ SurfaceInit init_surface(const domain::PlcDomain& dom, double d, const SurfaceOp
   out.mesh = build_surface(dom);
   if (!(d > 0) || !std::isfinite(d)) return out;
   out.mesh.d = d;
-  out.stats.vertex_cap = vertex_cap(out.mesh, d, options);
+  out.stats.uniform_estimate = size_estimate(out.mesh);
+  if (options.sizing != SurfaceSizing::Uniform) {
+    set_graded_sizes(out.mesh, dom);
+    out.stats.graded_estimate = size_estimate(out.mesh);
+    out.stats.graded = options.sizing == SurfaceSizing::Graded ||
+                       out.stats.uniform_estimate > kGradedGain * out.stats.graded_estimate;
+    if (!out.stats.graded) out.mesh.segment_d.clear(), out.mesh.facet_d.clear();
+  }
+  out.stats.vertex_cap = vertex_cap(
+      out.mesh, out.stats.graded ? out.stats.graded_estimate : out.stats.uniform_estimate,
+      options);
   Initializer init(out.mesh, d, out.stats.vertex_cap, out.stats);
   init.refine_segments();
   init.refine_facets();

@@ -28,6 +28,30 @@
 // ..."). A degenerate cavity (excluded by the exact arguments for coplanar points) throws
 // SurfaceError naming the facet.
 // d infinite (no two unrelated components) or not positive: nothing is refined.
+//
+// Graded variant (issue #11: one small feature anywhere makes the uniform mesh fine
+// everywhere). Each facet F is refined for its own d_F and each segment S for
+// d'_S = min(d_S, d_F over the facets F containing S), where d_X is the distance from X
+// to the components unrelated to X, times 1/sqrt(2) (domain::local_feature_sizes; every
+// d_X >= d). (d_S alone can exceed d_F: a cube's edge is farther from a void inside than
+// the cube's face is; a property test found the step 2 splits that then follow.)
+// Properties 2 and 3 of §2.1 hold per element: subsegments of S shorter than 2 d'_S,
+// subfacets of F of circumradius below d_F sqrt(2). What Lemma 1 takes from them still
+// holds:
+//   - a point on S (a subsegment midpoint) encroaches nothing unrelated to S: the
+//     diametral ball of a subsegment of S' has radius below d'_S' <= dist(S', X)/sqrt(2)
+//     for X unrelated to S', so it reaches no point of X (likewise for the equatorial
+//     balls of subfacets of F);
+//   - step 2's termination argument runs per facet: a circumcenter of a subfacet of F with
+//     R >= d_F sqrt(2) encroaches no subsegment of F's boundary, each shorter than
+//     2 d'_S <= 2 d_F;
+//   - invariants 2-4 use h < d, and every d_X >= d.
+// Not carried over: property 1's unencroached start between RELATED elements of
+// different sizes (a coarse subfacet next to the fine subfacets of a facet across a
+// right angle); SeqRefinement refines what T_o has encroached before anything else
+// (refine/seq_refinement.hpp) and claims Theorem 1's h only when there was nothing.
+// Estimates: sum over segments of length / d'_S plus sum over facets of area / d_F^2,
+// against the same with d: the order of the vertices each variant adds.
 #pragma once
 
 #include <cstddef>
@@ -42,8 +66,15 @@ namespace pdr::surface {
 // lists, for the memory part of the cap (measured: about 200 bytes; rounded up).
 inline constexpr std::size_t kSurfaceVertexBytes = 256;
 
+// Uniform: paper §2.1 with the global d. Graded: each segment and facet with its own d
+// (see above). Auto: uniform unless the graded mesh is estimated at least kGradedGain
+// times smaller.
+enum class SurfaceSizing { Auto, Uniform, Graded };
+inline constexpr double kGradedGain = 4;
+
 struct SurfaceOptions {
   std::size_t max_vertices = 0;  // 0: the derived cap only
+  SurfaceSizing sizing = SurfaceSizing::Auto;
 };
 
 struct SurfaceStats {
@@ -51,6 +82,8 @@ struct SurfaceStats {
   std::size_t circumcenters = 0;         // step 2 insertions
   std::size_t encroachment_splits = 0;   // step 2 subsegment splits instead of circumcenters
   std::size_t vertex_cap = 0;            // the guard in force
+  bool graded = false;                   // the sizing used
+  double uniform_estimate = 0, graded_estimate = 0;  // the vertex estimates it chose by
 };
 
 struct SurfaceInit {

@@ -93,6 +93,11 @@ class SurfaceMesh {
  public:
   std::string source;                    // input file name, for diagnostics
   double d = 0;                          // paper §2.1 d the mesh was refined for (0: none)
+  // The graded initial mesh (surface/init.hpp): the d each segment and each facet was
+  // refined for; empty when the mesh is uniform (every one is d).
+  std::vector<double> segment_d, facet_d;
+  double segment_size(std::uint32_t s) const { return segment_d.empty() ? d : segment_d[s]; }
+  double facet_size(std::uint32_t f) const { return facet_d.empty() ? d : facet_d[f]; }
   std::vector<SurfaceSegment> segments;  // parallel to domain::PlcDomain::segments
   std::vector<SurfaceFacet> facets;      // parallel to domain::PlcDomain::facets
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "domain/distance.hpp"
@@ -24,6 +25,27 @@ void expect_fast_equals_brute(const Plc& plc) {
   RC_ASSERT(std::isfinite(brute.min_distance));
   RC_ASSERT(std::fabs(fast.min_distance - brute.min_distance) <= 1e-12 * brute.min_distance);
   RC_ASSERT(fast.d == fast.min_distance / std::sqrt(2.0));
+  // Per component (the graded surface mesh's sizes): the hierarchy's answer equals the
+  // all-pairs one, and the smallest is d.
+  const LocalFeatureSizes local = local_feature_sizes(dom), ref = local_feature_sizes_brute(dom);
+  RC_ASSERT(local.segment_d.size() == dom.segments.size());
+  RC_ASSERT(local.facet_d.size() == dom.facets.size());
+  const auto near = [](double a, double b) {
+    return a == b || std::fabs(a - b) <= 1e-12 * std::max(std::fabs(a), std::fabs(b));
+  };
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t s = 0; s < dom.segments.size(); ++s) {
+    RC_ASSERT(near(local.segment_d[s], ref.segment_d[s]));
+    smallest = std::min(smallest, local.segment_d[s]);
+  }
+  for (std::size_t f = 0; f < dom.facets.size(); ++f) {
+    RC_ASSERT(near(local.facet_d[f], ref.facet_d[f]));
+    RC_ASSERT(local.facet_d[f] >= fast.d * (1 - 1e-12));
+    smallest = std::min(smallest, local.facet_d[f]);
+  }
+  // Each local size is a minimum over some of the unrelated pairs d minimises over (not the
+  // pairs of two vertices, e.g. a segment's own ends): never below d.
+  RC_ASSERT(smallest >= fast.d * (1 - 1e-12));
 }
 
 // A coordinate in a cell of width 16 starting at `cell`: cell*16 + k/7 for k in [lo, hi].

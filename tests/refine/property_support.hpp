@@ -26,18 +26,20 @@ namespace pdr::refine::test {
 // Size control, as `pdr mesh` options.
 struct Sizing {
   std::optional<double> max_volume, size;
+  bool graded = false;  // --surface-sizing graded (else auto)
   std::string options() const {
     std::ostringstream s;
     s.precision(17);
     if (max_volume) s << " --max-volume " << *max_volume;
     if (size) s << " --size " << *size;
+    if (graded) s << " --surface-sizing graded";
     return s.str();
   }
 };
 
 inline void showValue(const Sizing& z, std::ostream& os) { os << "options:" << z.options(); }
 
-// "# options: --max-volume V --size L" in a regress file's comments.
+// "# options: --max-volume V --size L [--surface-sizing graded]" in a regress file's comments.
 inline Sizing sizing_of_file(const std::string& path) {
   Sizing z;
   std::ifstream in(path);
@@ -45,6 +47,12 @@ inline Sizing sizing_of_file(const std::string& path) {
     if (line.rfind("# options:", 0) != 0) continue;
     std::istringstream s(line.substr(10));
     for (std::string key; s >> key;) {
+      if (key == "--surface-sizing") {
+        std::string v;
+        s >> v;
+        z.graded = v == "graded";
+        continue;
+      }
       double v = 0;
       s >> v;
       if (key == "--max-volume") z.max_volume = v;
@@ -154,6 +162,7 @@ inline int run_mesh(const Plc& plc, const Sizing& z, bool audit, nlohmann::json&
   args.options.audit = audit;
   args.options.max_volume = z.max_volume;
   args.options.size = z.size;
+  if (z.graded) args.surface_sizing = surface::SurfaceSizing::Graded;
   app::Summary s;
   try {
     const int code = app::mesh_plc(plc, args, s);

@@ -129,6 +129,51 @@ rc::Gen<Plc> gen_admissible_domain(bool rounded_hexagons) {
   });
 }
 
+rc::Gen<Plc> gen_small_feature_domain() {
+  return rc::gen::exec([] {
+    const int kind = *rc::gen::inRange(0, 3);
+    const double w = 4 + *rc::gen::inRange(0, 5), dep = 2 + *rc::gen::inRange(0, 4);
+    const double small = w / std::exp2(*rc::gen::inRange(1, 7));  // w/2 .. w/64
+    // A position in [lo, hi - size] on a grid of eighths.
+    const auto place = [](double lo, double hi, double size) {
+      return lo + (hi - size - lo) * *rc::gen::inRange(1, 8) / 8.0;
+    };
+    if (kind == 0) {  // a box with a small cubical void
+      const double h = std::max(dep, small * 1.5);
+      const Point lo{place(0, w, small), place(0, dep, std::min(small, dep / 2)),
+                     place(0, h, small)};
+      const double sy = std::min(small, dep / 2);
+      Plc plc = merge(box({0, 0, 0}, {w, dep, h}),
+                      box(lo, {lo[0] + small, lo[1] + sy, lo[2] + small}));
+      plc.holes.push_back({lo[0] + small / 2, lo[1] + sy / 2, lo[2] + small / 2});
+      relabel(plc);
+      return plc;
+    }
+    if (kind == 1) {  // a plate with a small square through-hole
+      const double t = 0.5 + *rc::gen::inRange(0, 4) * 0.25;
+      const double x0 = place(0, w, small), y0 = place(0, dep, std::min(small, dep / 2));
+      const double x1 = x0 + small, y1 = y0 + std::min(small, dep / 2);
+      std::vector<Point> p;
+      for (const double z : {0.0, t})
+        for (const P2d& q : std::vector<P2d>{{0, 0}, {w, 0}, {w, dep}, {0, dep}, {x0, y0},
+                                             {x1, y0}, {x1, y1}, {x0, y1}})
+          p.push_back({q[0], q[1], z});
+      std::vector<FacetSpec> f{{{0, 1, 2, 3}, {4, 5, 6, 7}}, {{8, 9, 10, 11}, {12, 13, 14, 15}}};
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        const std::uint32_t j = (i + 1) % 4;
+        f.push_back({{i, j, 8 + j, 8 + i}});
+        f.push_back({{4 + i, 4 + j, 12 + j, 12 + i}});
+      }
+      Plc plc = make_plc(p, f);
+      plc.facets[0].holes.push_back({(x0 + x1) / 2, (y0 + y1) / 2, 0});
+      plc.facets[1].holes.push_back({(x0 + x1) / 2, (y0 + y1) / 2, t});
+      return plc;
+    }
+    // two boxes a small gap apart
+    return merge(box({0, 0, 0}, {w, dep, dep}), box({w + small, 0, 0}, {2 * w, dep, dep}));
+  });
+}
+
 std::string poly_text(const Plc& plc, const std::string& comment) {
   std::ostringstream s;
   s.precision(17);

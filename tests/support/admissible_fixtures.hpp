@@ -27,6 +27,12 @@ namespace pdr::test {
 // rounded_hexagons: also rotated regular hexagons (coordinates not representable).
 rc::Gen<Plc> gen_admissible_domain(bool rounded_hexagons = true);
 
+// Admissible domains with one small feature, where the uniform surface mesh of paper
+// §2.1 is fine everywhere and the graded one is not (surface/init.hpp): a box with a small
+// cubical void, a plate with a small square through-hole, two boxes a small gap apart.
+// The feature is 1/2 to 1/64 of the domain's size, at a random place.
+rc::Gen<Plc> gen_small_feature_domain();
+
 // The PLC as a TetGen .poly file (1-based, coordinates with 17 significant digits: the
 // reader gives back the same doubles), with `comment` as its first line(s).
 std::string poly_text(const Plc& plc, const std::string& comment);

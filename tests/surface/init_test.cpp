@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "support/plc_fixtures.hpp"
 #include "support/surface_fixtures.hpp"
@@ -39,6 +40,52 @@ TEST(SurfaceInit, Box) { expect_clean("box.poly"); }
 TEST(SurfaceInit, CubeInCube) { expect_clean("cube-in-cube.poly"); }
 TEST(SurfaceInit, LPrism) { expect_clean("l-prism.poly"); }
 TEST(SurfaceInit, TeeAdmissible) { expect_clean("tee-admissible.poly"); }
+
+// A box 8 x 5 x 5 with a cubical void of side 1/8: d is set by the void, so the uniform
+// mesh of §2.1 covers the outer box at the void's scale; the graded one sizes each facet and
+// segment by its own distance to unrelated components (surface/init.hpp), keeps every
+// exact invariant of audit_surface (sizes per element, encroachment included), and is far
+// smaller.
+TEST(SurfaceInit, GradedOnASmallFeature) {
+  Plc plc = merge(box({0, 0, 0}, {8, 5, 5}), box({1, 1, 1}, {1.125, 1.125, 1.125}));
+  plc.holes.push_back({1.0625, 1.0625, 1.0625});
+  relabel(plc);
+  const DomainAnalysis a = analyze(plc);
+  ASSERT_TRUE(a.report.admissible);
+  const SurfaceInit graded = init_surface(a);  // auto
+  const SurfaceInit uniform = init_surface(a, {0, SurfaceSizing::Uniform});
+  EXPECT_TRUE(graded.stats.graded);
+  EXPECT_FALSE(uniform.stats.graded);
+  EXPECT_GT(graded.stats.uniform_estimate, kGradedGain * graded.stats.graded_estimate);
+  const SurfaceAudit audit = audit_surface(graded.mesh);
+  EXPECT_TRUE(audit.ok()) << describe(audit);
+  EXPECT_TRUE(audit_surface(uniform.mesh).ok());
+  EXPECT_LT(10 * graded.mesh.vertex_count(), uniform.mesh.vertex_count());
+  // Every size is at least d. The outer box's facets are sized by their distance to the
+  // void (1 for the three walls at x, y, z = 0; 3.875 and 6.875 for the others), the
+  // void's by their opposite faces (1/8 apart, sharing no vertex: unrelated), which set d.
+  const SurfaceMesh& m = graded.mesh;
+  EXPECT_NEAR(m.d, 0.125 / std::sqrt(2.0), 1e-12);
+  for (std::uint32_t s = 0; s < m.segments.size(); ++s) EXPECT_GE(m.segment_size(s), m.d);
+  std::multiset<long> outer;
+  for (std::uint32_t f = 0; f < 6; ++f) outer.insert(std::lround(m.facet_size(f) * std::sqrt(2.0) * 1000));
+  EXPECT_EQ(outer, (std::multiset<long>{1000, 1000, 1000, 3875, 3875, 6875}));
+  for (std::uint32_t f = 6; f < 12; ++f) EXPECT_NEAR(m.facet_size(f), m.d, 1e-15);
+  // Step 2 needs no split (the per-facet argument of surface/init.hpp).
+  EXPECT_EQ(graded.stats.encroachment_splits, 0u);
+  // On a uniform domain auto keeps the paper's mesh.
+  EXPECT_FALSE(init_surface(analyze(read_data("cube-in-cube.poly"))).stats.graded);
+  // Forced graded on a cube of side 6 with a unit void 2 from its walls (a property test's
+  // find): an outer edge is 2 sqrt(2) from the void, its faces only 2, so the edge must be
+  // refined for its faces' d, not its own, or step 2's circumcenters encroach it.
+  Plc cube = merge(box({0, 0, 0}, {6, 6, 6}), box({2, 2, 2}, {3, 3, 3}));
+  cube.holes.push_back({2.5, 2.5, 2.5});
+  relabel(cube);
+  const SurfaceInit forced = init_surface(analyze(cube), {0, SurfaceSizing::Graded});
+  EXPECT_TRUE(forced.stats.graded);
+  EXPECT_EQ(forced.stats.encroachment_splits, 0u);
+  EXPECT_TRUE(audit_surface(forced.mesh).ok()) << describe(audit_surface(forced.mesh));
+}
 
 TEST(SurfaceInit, FrameWithFacetHoles) {
   const DomainAnalysis a = analyze(frame_box());
