@@ -242,6 +242,11 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                                   " refinements of surface elements missing from the "
                                   "tetrahedralization were refused (see unsplit)");
     if (code == kExitOk) code = kExitNotGuaranteed;
+  } else if (rr.stats.flat_left > 0) {
+    summary.set("conformity", "NOT CONFORMING: " + std::to_string(rr.stats.flat_left) +
+                                  " flat tets lie on facets inside the domain (" +
+                                  rr.stop_reason + "; see unsplit)");
+    if (code == kExitOk) code = kExitNotGuaranteed;
   }
   if (!args.prefix.empty()) {
     progress.phase("write");

@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
 
 #include "mesh/tables.hpp"
 
@@ -11,17 +14,6 @@ namespace {
 
 bool holds(const VertexId* v, VertexId x) {
   return v[0] == x || v[1] == x || v[2] == x || v[3] == x;
-}
-
-// Whether some boundary face of c (a face of a conflict tet, opposite vertex face_of(h))
-// holds both a and b.
-bool on_boundary(const TetStore& s, const Cavity& c, VertexId a, VertexId b) {
-  for (const HalfFace h : c.boundary) {
-    const VertexId* v = s.vertices(tet_of(h));
-    const VertexId apex = v[face_of(h)];
-    if (apex != a && apex != b && holds(v, a) && holds(v, b)) return true;
-  }
-  return false;
 }
 
 // Ids are reused after splits: an entry with the same id and other vertices was a former
@@ -51,20 +43,55 @@ void add_subsegment(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out)
 
 void doomed_elements(const VolumeMesh& m, const Cavity& c, EncroachedLists& out) {
   const TetStore& s = m.dt.store();
+  // Linear in the cavity (a skinny tet's cavity at a sharp angle spans much of T): a
+  // sorted copy of the conflict tets, and the edges of the boundary faces in a hash set,
+  // each built only when a subfacet or subsegment asks.
+  std::vector<TetId> sorted;
+  std::unordered_set<std::uint64_t> boundary_edges;
+  const auto key = [](VertexId a, VertexId b) {
+    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+  };
+  const std::size_t subfacets_before = out.subfacets.size();
+  const std::size_t subsegments_before = out.subsegments.size();
   for (const TetId t : c.conflict) {
     const VertexId* v = s.vertices(t);
     for (int f = 0; f < 4; ++f) {
       const auto sf = m.face_subfacet(t, f);
       if (!sf) continue;
-      const TetId n = s.neighbour(t, f);
-      if (std::find(c.conflict.begin(), c.conflict.end(), n) != c.conflict.end())
-        add_subfacet(m, *sf, out);
+      if (sorted.empty()) {
+        sorted.assign(c.conflict.begin(), c.conflict.end());
+        std::sort(sorted.begin(), sorted.end());
+      }
+      if (std::binary_search(sorted.begin(), sorted.end(), s.neighbour(t, f)))
+        out.subfacets.push_back({*sf, m.surf.subfacet(*sf).v, kNone, kNoTet});
     }
     for (const auto& [i, j] : tables::kEdgeVertex) {
       const auto sub = m.subsegment(v[i], v[j]);
-      if (sub && !on_boundary(s, c, v[i], v[j])) add_subsegment(m, *sub, out);
+      if (!sub) continue;
+      if (boundary_edges.empty())
+        for (const HalfFace h : c.boundary) {
+          const VertexId* w = s.vertices(tet_of(h));
+          const auto& fv = tables::kFaceVertex[face_of(h)];
+          for (int k = 0; k < 3; ++k)
+            boundary_edges.insert(key(w[fv[k]], w[fv[(k + 1) % 3]]));
+        }
+      if (boundary_edges.count(key(v[i], v[j])) == 0) {
+        const Subsegment& x = m.surf.subsegment(*sub);
+        out.subsegments.push_back({*sub, {x.v[0], x.v[1], 0}, kNone, kNoTet});
+      }
     }
   }
+  // Each element once (a subfacet is seen from both its tets, a subsegment from each tet
+  // around it); the lists before this call are kept as they were.
+  const auto dedupe = [](std::vector<Encroached>& list, std::size_t from) {
+    const auto by_id = [](const Encroached& a, const Encroached& b) { return a.id < b.id; };
+    std::sort(list.begin() + static_cast<std::ptrdiff_t>(from), list.end(), by_id);
+    list.erase(std::unique(list.begin() + static_cast<std::ptrdiff_t>(from), list.end(),
+                           [](const Encroached& a, const Encroached& b) { return a.id == b.id; }),
+               list.end());
+  };
+  dedupe(out.subfacets, subfacets_before);
+  dedupe(out.subsegments, subsegments_before);
 }
 
 void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,

@@ -14,8 +14,11 @@
 #include <optional>
 #include <sstream>
 
+#include "delaunay/conflict.hpp"
 #include "geom/construct.hpp"
+#include "geom/predicates.hpp"
 #include "geom/point_text.hpp"
+#include "mesh/tables.hpp"
 #include "refine/audit.hpp"
 #include "refine/budget.hpp"
 #include "refine/closure.hpp"
@@ -217,13 +220,23 @@ class Refiner {
     return queued;
   }
 
-  // The budget ended with elements of D missing from T: each is listed.
+  // The budget ended with elements of D missing from T: each is listed. So are flat tets
+  // on a facet still inside (refine/flat.hpp rule 1: their repair waited in the queue):
+  // two of their faces lie on the facet without being subfacets.
   void abandon_missing() {
     for (const auto& n : conformity_.abandon(m_)) {
       ++res_.stats.conformity_refused;
       unsplit(std::string("volume.conformity: ") + (n.subsegment ? "subsegment " : "subfacet ") +
               std::to_string(n.e.id) + " is not in T (" + res_.stop_reason + ")");
     }
+    if (res_.stop_reason.empty()) return;  // the queue emptied: every flat tet was repaired
+    const TetStore& s = m_.dt.store();
+    for (TetId t = 0; t < s.slots(); ++t)
+      if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t) && flat_subfacet_face(m_, t))
+        ++res_.stats.flat_left;
+    if (res_.stats.flat_left > 0)
+      unsplit("refine.flat: " + std::to_string(res_.stats.flat_left) +
+              " flat tets on facets are left inside (" + res_.stop_reason + ")");
   }
 
   // Commits cavity c (p becomes D's vertex sv, kNone: off ∂Ω) and records the elements of
@@ -458,8 +471,9 @@ class Refiner {
     after_insert(v, "subfacet", r2);
   }
 
-  bool refine_own_element(TetId t, const Point& p) {
-    const std::span<const TetId> own(&t, 1);
+  // An element of `holder` (a tet of p's cavity) that p encroaches, refined on behalf of t.
+  bool refine_element_of(TetId holder, TetId t, const Point& p) {
+    const std::span<const TetId> own(&holder, 1);
     if (const auto s = closure_encroached_subsegment(m_, {own}, p)) {
       if (auto why = split(*s, t)) refuse(t, std::move(*why));
       return true;
@@ -467,6 +481,39 @@ class Refiner {
     if (const auto f = closure_encroached_subfacet(m_, {own}, p)) {
       refine_subfacet(*f, t, t);
       return true;
+    }
+    return false;
+  }
+
+  // Outside the theory, before p's cavity is built: the tets a visibility walk from t
+  // towards p enters while each conflicts with p are tets of p's cavity, so their elements
+  // are in its closure, and one that p encroaches is refined as Fig. 2 would (the order
+  // among encroached elements differs; outside the theory it carries no proof). A skinny
+  // tet at a sharp angle has its circumcenter far off, beyond a facet it encroaches, and
+  // its cavity spans much of T, built again for every tet a guard refuses: with a 5-degree
+  // wedge that cost grew quadratically (runs past 120 s). The walk stops at a tet that
+  // holds p, at one that does not conflict, at the hull, or after kPathSteps tets; the full
+  // cavity then decides.
+  static constexpr int kPathSteps = 64;
+  bool refine_along_path(TetId t, const Point& p) {
+    const TetStore& s = m_.dt.store();
+    TetId cur = t;
+    int entered = -1;
+    for (int step = 0; step < kPathSteps; ++step) {
+      if (refine_element_of(cur, t, p)) return true;
+      const VertexId* v = s.vertices(cur);
+      int crossed = -1;
+      for (int f = 0; f < 4 && crossed < 0; ++f) {
+        if (f == entered) continue;
+        const auto& fv = tables::kFaceVertex[f];
+        if (orient3d(pt(v[fv[0]]), pt(v[fv[1]]), pt(v[fv[2]]), p) == Sign::Positive) crossed = f;
+      }
+      if (crossed < 0) return false;  // cur holds p
+      const HalfFace h = s.opposite(cur, crossed);
+      const TetId n = tet_of(h);
+      if (s.is_ghost(n) || !in_conflict(s, m_.dt.points(), n, p)) return false;
+      cur = n;
+      entered = face_of(h);
     }
     return false;
   }
@@ -483,10 +530,9 @@ class Refiner {
     const VertexId* v = m_.dt.store().vertices(t);
     const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
     const Point p = construct::circumcenter(a, b, c, d);
-    // Outside the theory, an element of t itself that p encroaches is in the closure too
-    // (t conflicts with p) and is refined without building p's cavity, which for a skinny
-    // tet at a sharp angle spans much of T (and would be built for each refused tet).
-    if (guard_.active() && refine_own_element(t, p)) return;
+    // Outside the theory, an element that p encroaches on the way from t to p is refined
+    // without building p's cavity (refine_along_path).
+    if (guard_.active() && refine_along_path(t, p)) return;
     bool outside = false;
     if (!plan(p, t, cav_, outside)) {
       refuse(t, "refine.tet: circumcenter " + point_text(p) + " is already a vertex");

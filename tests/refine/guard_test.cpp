@@ -16,6 +16,7 @@
 #include "delaunay/export.hpp"
 #include "domain/analysis.hpp"
 #include "io/mesh_io.hpp"
+#include "refine/flat.hpp"
 #include "refine/initial.hpp"
 #include "refine/seq_refinement.hpp"
 #include "refine/split.hpp"
@@ -89,6 +90,33 @@ TEST(RefineGuard, TeeMeshesWithoutEncroachmentAtSeveralSizes) {
 Plc wedge(double deg) {
   const double t = std::tan(deg * std::numbers::pi / 180);
   return test::prism({{0, 0}, {10, 0}, {10, 10 * t}}, 0, 4);
+}
+
+// A run the vertex cap stops may leave flat tets on a facet inside the domain (rounding on
+// a tilted facet; their repair waited in the queue): each is counted and the run says so
+// (flat_left, unsplit "refine.flat", `pdr mesh` prints NOT CONFORMING). A 5-degree blade
+// (a wedge 3 long, 1 high; tilted faces) stopped at 5,000 vertices leaves two.
+TEST(RefineGuard, CapStopReportsFlatTetsLeft) {
+  const double t = 3 * std::tan(2.5 * std::numbers::pi / 180);
+  const Plc blade = test::prism({{0, 0}, {3, -t}, {3, t}}, 0, 1);
+  DomainAnalysis an = analyze(blade);
+  VolumeMesh vm = build_initial(init_surface(an).mesh, an.domain.plc.holes);
+  RefineOptions o;
+  o.d = an.report.feature.d;
+  o.admissible = an.report.admissible;
+  o.acute_vertices = acute_vertices(an.report);
+  o.max_vertices = 5000;
+  const RefineResult rr = refine(vm, o);
+  ASSERT_FALSE(rr.stop_reason.empty());
+  std::size_t flat = 0;
+  const TetStore& s = vm.dt.store();
+  for (TetId x = 0; x < s.slots(); ++x)
+    if (s.is_alive(x) && !s.is_ghost(x) && vm.is_inside(x) && flat_subfacet_face(vm, x)) ++flat;
+  EXPECT_GT(flat, 0u);
+  EXPECT_EQ(rr.stats.flat_left, flat);
+  EXPECT_TRUE(std::any_of(rr.unsplit.begin(), rr.unsplit.end(), [](const std::string& u) {
+    return u.rfind("refine.flat: ", 0) == 0;
+  }));
 }
 
 // Whatever a wedge ends with, the mesh is a valid, Delaunay, conforming tetrahedralization
