@@ -244,8 +244,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     if (code == kExitOk) code = kExitNotGuaranteed;
   } else if (rr.stats.flat_left > 0) {
     summary.set("conformity", "NOT CONFORMING: " + std::to_string(rr.stats.flat_left) +
-                                  " flat tets lie on facets inside the domain (" +
-                                  rr.stop_reason + "; see unsplit)");
+                                  " flat tets lie on facets inside the domain (see unsplit)");
     if (code == kExitOk) code = kExitNotGuaranteed;
   }
   if (!args.prefix.empty()) {

@@ -18,25 +18,26 @@ bool holds(const VertexId* v, VertexId x) {
 
 // Ids are reused after splits: an entry with the same id and other vertices was a former
 // element, gone from D (next() would drop it as stale), so it now stands for this one.
-void add_subfacet(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
-  const std::array<std::uint32_t, 3> v = m.surf.subfacet(id).v;
-  for (Encroached& e : out.subfacets)
+// True when the element was not listed yet (new, or in place of a former one).
+bool add_element(std::vector<Encroached>& list, std::uint32_t id,
+                 const std::array<std::uint32_t, 3>& v) {
+  for (Encroached& e : list)
     if (e.id == id) {
+      if (e.v == v) return false;
       e.v = v;
-      return;
+      return true;
     }
-  out.subfacets.push_back({id, v, kNone, kNoTet});
+  list.push_back({id, v, kNone, kNoTet});
+  return true;
 }
 
-void add_subsegment(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
+bool add_subfacet(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
+  return add_element(out.subfacets, id, m.surf.subfacet(id).v);
+}
+
+bool add_subsegment(const VolumeMesh& m, std::uint32_t id, EncroachedLists& out) {
   const Subsegment& x = m.surf.subsegment(id);
-  const std::array<std::uint32_t, 3> v{x.v[0], x.v[1], 0};
-  for (Encroached& e : out.subsegments)
-    if (e.id == id) {
-      e.v = v;
-      return;
-    }
-  out.subsegments.push_back({id, v, kNone, kNoTet});
+  return add_element(out.subsegments, id, {x.v[0], x.v[1], 0});
 }
 
 }  // namespace
@@ -94,9 +95,10 @@ void doomed_elements(const VolumeMesh& m, const Cavity& c, EncroachedLists& out)
   dedupe(out.subsegments, subsegments_before);
 }
 
-void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
+bool missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
                 EncroachedLists& out) {
-  if (v >= m.d2s.size() || m.d2s[v] == kNone) return;
+  bool fresh = false;
+  if (v >= m.d2s.size() || m.d2s[v] == kNone) return fresh;
   const std::uint32_t sv = m.d2s[v];
   const TetStore& s = m.dt.store();
   // Every tet of the star holds v: {v, a, b} is a face and {v, a} an edge of T iff some
@@ -113,14 +115,15 @@ void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
     int k = 0;
     for (const std::uint32_t x : f.v)
       if (x != sv) other[k++] = m.s2d[x];
-    if (!in_star(other[0], other[1])) add_subfacet(m, id, out);
+    if (!in_star(other[0], other[1])) fresh = add_subfacet(m, id, out) || fresh;
   }
   for (const std::uint32_t id : m.surf.vertex_subsegments(sv)) {
     const Subsegment& x = m.surf.subsegment(id);
     if (x.v[0] != sv && x.v[1] != sv) continue;  // a stale entry
     const VertexId a = m.s2d[x.v[0] == sv ? x.v[1] : x.v[0]];
-    if (!in_star(a, a)) add_subsegment(m, id, out);
+    if (!in_star(a, a)) fresh = add_subsegment(m, id, out) || fresh;
   }
+  return fresh;
 }
 
 std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
@@ -238,11 +241,10 @@ const EncroachedLists& ConformityTracker::doomed(const VolumeMesh& m, const Cavi
 }
 
 bool ConformityTracker::committed(const VolumeMesh& m, VertexId v, std::span<const TetId> star) {
-  const std::size_t had = missing_.subsegments.size() + missing_.subfacets.size();
-  for (const Encroached& e : doomed_.subsegments) add_subsegment(m, e.id, missing_);
-  for (const Encroached& e : doomed_.subfacets) add_subfacet(m, e.id, missing_);
-  missing_at(m, v, star, missing_);
-  const bool fresh = missing_.subsegments.size() + missing_.subfacets.size() > had;
+  bool fresh = false;  // an element listed that was not (a reused id counts as new)
+  for (const Encroached& e : doomed_.subsegments) fresh = add_subsegment(m, e.id, missing_) || fresh;
+  for (const Encroached& e : doomed_.subfacets) fresh = add_subfacet(m, e.id, missing_) || fresh;
+  fresh = missing_at(m, v, star, missing_) || fresh;
   if (fresh || broken()) dirty_.insert(dirty_.end(), star.begin(), star.end());
   return fresh;
 }

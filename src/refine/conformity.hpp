@@ -47,8 +47,9 @@ namespace pdr::refine {
 void doomed_elements(const VolumeMesh& m, const Cavity& c, EncroachedLists& out);
 
 // Appends the subfacets and subsegments of D at T vertex v that are not faces or edges of
-// the tets of `star` (v's star in T, every tet holding v).
-void missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
+// the tets of `star` (v's star in T, every tet holding v); true when one of them was not
+// listed in `out` yet (an entry with the same, reused id and other vertices is replaced).
+bool missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
                 EncroachedLists& out);
 
 // Recomputes the inside flag of every live finite tet in `made` from its neighbours

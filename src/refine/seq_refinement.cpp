@@ -86,6 +86,11 @@ class Refiner {
         at_start.subfacets.empty())
       res_.stats.h_theorem = theorem_h(m_, o_);
     const TetStore& s = m_.dt.store();
+    // Then the stars of the new vertices are searched for encroachment as outside the
+    // theory (a half of a split element can still be encroached by the same vertex), and
+    // the Lemma 1 audit, whose base case failed, notes instead of throwing.
+    watch_encroachment_ = !o_.admissible || !at_start.subsegments.empty() ||
+                          !at_start.subfacets.empty();
     if (!o_.admissible)
       start_guards();
     else
@@ -135,6 +140,7 @@ class Refiner {
   std::vector<TetId> around_;
   RefusedTets refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
+  bool watch_encroachment_ = false;  // new stars searched for encroachment (run())
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
   ConformityTracker conformity_;  // refine/conformity.hpp
 
@@ -221,22 +227,26 @@ class Refiner {
   }
 
   // The budget ended with elements of D missing from T: each is listed. So are flat tets
-  // on a facet still inside (refine/flat.hpp rule 1: their repair waited in the queue):
-  // two of their faces lie on the facet without being subfacets.
+  // on a facet still inside (refine/flat.hpp rule 1: their repair waited in the queue
+  // when the cap stopped the run, or was refused): two of their faces lie on the facet
+  // without being subfacets.
   void abandon_missing() {
     for (const auto& n : conformity_.abandon(m_)) {
       ++res_.stats.conformity_refused;
       unsplit(std::string("volume.conformity: ") + (n.subsegment ? "subsegment " : "subfacet ") +
               std::to_string(n.e.id) + " is not in T (" + res_.stop_reason + ")");
     }
-    if (res_.stop_reason.empty()) return;  // the queue emptied: every flat tet was repaired
+    // Flat tets need a facet a few ulps off its plane: not with the exact theory's facets.
+    if (o_.admissible && o_.exact_theory) return;
     const TetStore& s = m_.dt.store();
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t) && flat_subfacet_face(m_, t))
         ++res_.stats.flat_left;
     if (res_.stats.flat_left > 0)
       unsplit("refine.flat: " + std::to_string(res_.stats.flat_left) +
-              " flat tets on facets are left inside (" + res_.stop_reason + ")");
+              " flat tets on facets are left inside (" +
+              (res_.stop_reason.empty() ? std::string("their repair was refused")
+                                        : res_.stop_reason) + ")");
   }
 
   // Commits cavity c (p becomes D's vertex sv, kNone: off ∂Ω) and records the elements of
@@ -324,11 +334,12 @@ class Refiner {
     return true;
   }
 
-  // A Lemma 1 audit check: it throws on admissible domains; outside the theory the first
-  // failure is noted.
+  // A Lemma 1 audit check: it throws on admissible domains whose T_o is unencroached;
+  // otherwise (outside the theory, or Lemma 1's base case failed) the first failure is
+  // noted.
   template <class Check>
   void audited(Check check) {
-    if (o_.admissible) {
+    if (!watch_encroachment_) {
       check();
       return;
     }
@@ -385,7 +396,7 @@ class Refiner {
     const double h = res_.stats.h_theorem > 0 ? res_.stats.h_theorem : res_.stats.h;
     if (o_.audit) audited([&] { audit_edges(m_, v, star_, what, size2, h); });
     queue_star();
-    if (guard_.active()) find_encroached(m_, star_, enc_);
+    if (watch_encroachment_) find_encroached(m_, star_, enc_);
     step_.emplace_back(v, what);
     if (step_.size() > 1) return;  // a repair's vertex
     for (std::size_t i = 0; i < step_.size() && !at_cap();)
