@@ -58,29 +58,42 @@ struct Prim {
   std::uint32_t tri;    // Facet: triangle index
 };
 
-}  // namespace
-
-FeatureSize feature_size(const PlcDomain& dom) {
-  const std::vector<Point>& pts = dom.plc.points;
+// Every boundary vertex, segment and facet triangle, with its bounding box.
+struct Primitives {
   std::vector<Prim> prims;
   std::vector<Box> boxes;
+};
+
+Primitives primitives(const PlcDomain& dom) {
+  const std::vector<Point>& pts = dom.plc.points;
+  Primitives out;
   for (std::uint32_t v = 0; v < pts.size(); ++v)
     if (dom.on_boundary[v]) {
-      prims.push_back({ComponentKind::Vertex, v, 0});
-      boxes.emplace_back().add(pts[v]);
+      out.prims.push_back({ComponentKind::Vertex, v, 0});
+      out.boxes.emplace_back().add(pts[v]);
     }
   for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
-    prims.push_back({ComponentKind::Segment, s, 0});
-    Box& b = boxes.emplace_back();
+    out.prims.push_back({ComponentKind::Segment, s, 0});
+    Box& b = out.boxes.emplace_back();
     b.add(pts[dom.segments[s].a]);
     b.add(pts[dom.segments[s].b]);
   }
   for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
     for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t) {
-      prims.push_back({ComponentKind::Facet, f, t});
-      Box& b = boxes.emplace_back();
+      out.prims.push_back({ComponentKind::Facet, f, t});
+      Box& b = out.boxes.emplace_back();
       for (std::uint32_t v : dom.facets[f].tris[t].v) b.add(pts[v]);
     }
+  return out;
+}
+
+}  // namespace
+
+FeatureSize feature_size(const PlcDomain& dom) {
+  const std::vector<Point>& pts = dom.plc.points;
+  const Primitives all = primitives(dom);
+  const std::vector<Prim>& prims = all.prims;
+  const std::vector<Box>& boxes = all.boxes;
   const Bvh bvh(boxes);
 
   Best best;
@@ -198,25 +211,9 @@ double unrelated_dist2(const PlcDomain& dom, std::uint32_t s, std::uint32_t f, s
 LocalFeatureSizes local_feature_sizes(const PlcDomain& dom) {
   const std::vector<Point>& pts = dom.plc.points;
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::vector<Prim> prims;
-  std::vector<Box> boxes;
-  for (std::uint32_t v = 0; v < pts.size(); ++v)
-    if (dom.on_boundary[v]) {
-      prims.push_back({ComponentKind::Vertex, v, 0});
-      boxes.emplace_back().add(pts[v]);
-    }
-  for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
-    prims.push_back({ComponentKind::Segment, s, 0});
-    Box& b = boxes.emplace_back();
-    b.add(pts[dom.segments[s].a]);
-    b.add(pts[dom.segments[s].b]);
-  }
-  for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
-    for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t) {
-      prims.push_back({ComponentKind::Facet, f, t});
-      Box& b = boxes.emplace_back();
-      for (std::uint32_t v : dom.facets[f].tris[t].v) b.add(pts[v]);
-    }
+  const Primitives all = primitives(dom);
+  const std::vector<Prim>& prims = all.prims;
+  const std::vector<Box>& boxes = all.boxes;
   const Bvh bvh(boxes);
   // The nearest unrelated primitive to the query box, by branch and bound.
   auto nearest = [&](const Box& qb, std::uint32_t s, std::uint32_t f, std::uint32_t t,
@@ -251,14 +248,7 @@ LocalFeatureSizes local_feature_sizes(const PlcDomain& dom) {
 
 LocalFeatureSizes local_feature_sizes_brute(const PlcDomain& dom) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::vector<Prim> prims;
-  for (std::uint32_t v = 0; v < dom.plc.points.size(); ++v)
-    if (dom.on_boundary[v]) prims.push_back({ComponentKind::Vertex, v, 0});
-  for (std::uint32_t s = 0; s < dom.segments.size(); ++s)
-    prims.push_back({ComponentKind::Segment, s, 0});
-  for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
-    for (std::uint32_t t = 0; t < dom.facets[f].tris.size(); ++t)
-      prims.push_back({ComponentKind::Facet, f, t});
+  const std::vector<Prim> prims = primitives(dom).prims;
   LocalFeatureSizes out;
   out.segment_d.assign(dom.segments.size(), kInf);
   out.facet_d.assign(dom.facets.size(), kInf);
