@@ -8,11 +8,12 @@ namespace pdr::refine {
 
 namespace {
 
-// Rule 2 when `encroached`, rule 1 when `flat`.
-std::optional<std::uint32_t> pick(const VolumeMesh& m, TetId t, bool flat, bool encroached) {
+// One scan of t's subfacet faces: the largest hit of rule 1 (when `flat`) and the largest
+// hit of rule 1 or rule 2.
+SubfacetPicks pick(const VolumeMesh& m, TetId t, bool flat) {
   const TetStore& s = m.dt.store();
-  std::optional<std::uint32_t> best;
-  double best_r2 = -1;
+  SubfacetPicks out;
+  double flat_r2 = -1, any_r2 = -1;
   for (int f = 0; f < 4; ++f) {
     const auto sf = m.face_subfacet(t, f);
     if (!sf) continue;
@@ -21,32 +22,34 @@ std::optional<std::uint32_t> pick(const VolumeMesh& m, TetId t, bool flat, bool 
     const Subfacet& x = m.surf.subfacet(*sf);
     const Point &a = m.surf.point(x.v[0]), &b = m.surf.point(x.v[1]), &c = m.surf.point(x.v[2]);
     const std::uint32_t v = apex < m.d2s.size() ? m.d2s[apex] : kNone;
-    bool hit = false;
+    bool on_plane = false;
     const std::uint32_t plane = m.surf.facets[x.facet].plane_group;
     if (flat && v != kNone)
       for (const std::uint32_t y : m.surf.vertex_subfacets(v))
-        hit = hit || (m.surf.subfacet(y).alive &&
-                      m.surf.facets[m.surf.subfacet(y).facet].plane_group == plane);
-    hit = hit || (encroached && in_equatorial_ball(a, b, c, m.dt.point(apex)) == Sign::Positive);
-    if (!hit) continue;
+        on_plane = on_plane || (m.surf.subfacet(y).alive &&
+                                m.surf.facets[m.surf.subfacet(y).facet].plane_group == plane);
+    if (!on_plane && in_equatorial_ball(a, b, c, m.dt.point(apex)) != Sign::Positive) continue;
     const double r2 = construct::triangle_circumradius2(a, b, c);  // a choice only
-    if (r2 > best_r2) best_r2 = r2, best = *sf;
+    if (on_plane && r2 > flat_r2) flat_r2 = r2, out.flat = *sf;
+    if (r2 > any_r2) any_r2 = r2, out.any = *sf;
   }
-  return best;
+  return out;
 }
 
 }  // namespace
 
+SubfacetPicks subfacets_to_refine(const VolumeMesh& m, TetId t) { return pick(m, t, true); }
+
 std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t) {
-  return pick(m, t, true, true);
+  return pick(m, t, true).any;
 }
 
 std::optional<std::uint32_t> encroached_subfacet_face(const VolumeMesh& m, TetId t) {
-  return pick(m, t, false, true);
+  return pick(m, t, false).any;
 }
 
 std::optional<std::uint32_t> flat_subfacet_face(const VolumeMesh& m, TetId t) {
-  return pick(m, t, true, false);
+  return pick(m, t, true).flat;
 }
 
 }  // namespace pdr::refine

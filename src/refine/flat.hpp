@@ -53,5 +53,10 @@ std::optional<std::uint32_t> subfacet_to_refine(const VolumeMesh& m, TetId t);
 std::optional<std::uint32_t> encroached_subfacet_face(const VolumeMesh& m, TetId t);
 // The same for (1) alone: t is a flat tet on a facet (or coplanar group).
 std::optional<std::uint32_t> flat_subfacet_face(const VolumeMesh& m, TetId t);
+// Both in one scan: `flat` as flat_subfacet_face, `any` as subfacet_to_refine.
+struct SubfacetPicks {
+  std::optional<std::uint32_t> flat, any;
+};
+SubfacetPicks subfacets_to_refine(const VolumeMesh& m, TetId t);
 
 }  // namespace pdr::refine

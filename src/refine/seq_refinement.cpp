@@ -530,12 +530,12 @@ class Refiner {
   }
 
   void refine_tet(TetId t) {
-    if (const auto f = flat_subfacet_face(m_, t)) {  // issue #3: refine/flat.hpp rule 1
-      refine_subfacet(*f, t, t, /*below_floor=*/true);
+    // issue #3: refine/flat.hpp; a flat tet's repair (rule 1) is not held by the floor.
+    if (const SubfacetPicks f = subfacets_to_refine(m_, t); f.flat) {
+      refine_subfacet(*f.flat, t, t, /*below_floor=*/true);
       return;
-    }
-    if (const auto f = subfacet_to_refine(m_, t)) {  // issue #3: refine/flat.hpp
-      refine_subfacet(*f, t, t);
+    } else if (f.any) {
+      refine_subfacet(*f.any, t, t);
       return;
     }
     const VertexId* v = m_.dt.store().vertices(t);
