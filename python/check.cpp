@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api.hpp"
+#include "app/order_check.hpp"
 #include "app/summary.hpp"
 #include "arrays.hpp"
 #include "io/mesh_io.hpp"
@@ -44,6 +45,7 @@ py::dict check(const py::object& mesh_or_points, const py::object& tets,
     py::gil_scoped_release unlocked;  // the arrays were copied into mesh and plc
     const check::MeshView view = check::view_of(mesh);
     report = plc ? check::check_mesh(view, *plc, options) : check::check_mesh(view, options);
+    app::add_order_check(report, mesh, app::kOrderCheckSeed);
   }
   timer.lap("check");
 

@@ -10,6 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
+#include "app/order_check.hpp"
 #include "app/progress.hpp"
 #include "app/summary.hpp"
 #include "check/check.hpp"
@@ -80,6 +81,8 @@ int run_check(const CheckArgs& args) {
   const auto view = check::view_of(mesh);
   check::Report report =
       domain ? check::check_mesh(view, *domain, opt) : check::check_mesh(view, opt);
+  if (progress.enabled()) progress.phase("check: order independence");
+  add_order_check(report, mesh, kOrderCheckSeed);
   timer.lap("check");
   progress.finish();
 

@@ -39,10 +39,6 @@
 
 namespace pdr::app {
 
-// The order-independence check's BRIO seed: fixed (reproducible reports), and unlike the
-// kernel's default, so the rebuild inserts in another order than the initial mesh did.
-constexpr std::uint64_t kOrderCheckSeed = 0x0DE12;
-
 namespace {
 
 void check_range(const Plc& plc) {
@@ -295,6 +291,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     timer.lap("order_check");
     summary.set("order_independence",
                 nlohmann::json{{"seed", oc.seed}, {"tets", oc.tets}, {"missing", oc.missing},
+                               {"cospherical_ties", oc.ties},
                                {"first_missing", oc.first}});
     if (!oc.ok()) {
       failed.push_back("order.independence");

@@ -1,11 +1,14 @@
 // The order-independence check (order_check.hpp): DT(V) rebuilt in another order contains
-// every mesh tet.
+// every mesh tet; a tet it lacks is a cospherical tie or a violation.
 #include "app/order_check.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <string>
 
 #include "delaunay/bulk.hpp"
 #include "delaunay/delaunay.hpp"
+#include "geom/exact.hpp"
 
 namespace pdr::app {
 
@@ -18,9 +21,54 @@ Quad sorted(Quad q) {
   return q;
 }
 
+// For each missing tet, a vertex of DT(V) adjacent to one of its vertices that lies exactly
+// on its circumsphere, or -1. `dt` holds the rebuilt tets (sorted quads).
+std::vector<std::int64_t> tie_vertices(const MeshData& mesh, const std::vector<Quad>& dt,
+                                       const std::vector<std::size_t>& missing) {
+  // The DT(V) neighbours of every vertex of a missing tet, in one pass over DT(V).
+  std::vector<std::int32_t> slot(mesh.points.size(), -1);
+  std::vector<std::vector<std::uint32_t>> around;
+  for (std::size_t t : missing)
+    for (std::uint32_t v : mesh.tets[t])
+      if (slot[v] < 0) {
+        slot[v] = std::int32_t(around.size());
+        around.emplace_back();
+      }
+  for (const Quad& q : dt)
+    for (std::uint32_t v : q)
+      if (slot[v] >= 0)
+        around[slot[v]].insert(around[slot[v]].end(), q.begin(), q.end());
+  for (auto& a : around) {
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+  }
+  std::vector<std::int64_t> out;
+  out.reserve(missing.size());
+  for (std::size_t t : missing) {
+    const auto& m = mesh.tets[t];
+    const Point &a = mesh.points[m[0]], &b = mesh.points[m[1]], &c = mesh.points[m[2]],
+                &d = mesh.points[m[3]];
+    std::int64_t tie = -1;
+    if (exact::orient3d(a, b, c, d) != Sign::Zero)
+      for (std::uint32_t v : m) {
+        for (std::uint32_t w : around[slot[v]]) {
+          if (std::find(m.begin(), m.end(), w) != m.end()) continue;
+          if (exact::insphere(a, b, c, d, mesh.points[w]) == Sign::Zero) {
+            tie = w;
+            break;
+          }
+        }
+        if (tie >= 0) break;
+      }
+    out.push_back(tie);
+  }
+  return out;
+}
+
 }  // namespace
 
-OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed) {
+OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
+                                     std::size_t max_listed) {
   OrderCheck r;
   r.seed = seed;
   r.tets = mesh.tets.size();
@@ -30,7 +78,8 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed) {
   o.renumber = false;  // vertex ids stay the mesh's
   const BulkResult b = bulk_insert(dt, o);
   std::vector<Quad> all;
-  if (b.status == BulkStatus::Ok) {
+  r.rebuilt = b.status == BulkStatus::Ok;
+  if (r.rebuilt) {
     const TetStore& s = dt.store();
     all.reserve(s.live());
     for (TetId t = 0; t < s.slots(); ++t)
@@ -40,12 +89,93 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed) {
       }
     std::sort(all.begin(), all.end());
   }
-  for (const auto& t : mesh.tets) {
+  std::vector<std::size_t> missing;
+  for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
+    const auto& t = mesh.tets[i];
     const Quad q = sorted({t[0], t[1], t[2], t[3]});
     if (std::binary_search(all.begin(), all.end(), q)) continue;
-    if (r.missing++ < 10) r.first.push_back(q);
+    missing.push_back(i);
+    if (r.first.size() < max_listed) {
+      r.first.push_back(q);
+      r.first_index.push_back(i);
+    }
+  }
+  r.missing = missing.size();
+  if (r.rebuilt && !missing.empty()) {
+    const std::vector<std::int64_t> tie = tie_vertices(mesh, all, missing);
+    r.ties = std::size_t(std::count_if(tie.begin(), tie.end(), [](std::int64_t w) { return w >= 0; }));
+    r.first_tie_vertex.assign(tie.begin(), tie.begin() + std::ptrdiff_t(r.first.size()));
+  } else {
+    r.first_tie_vertex.assign(r.first.size(), -1);
   }
   return r;
+}
+
+namespace {
+
+check::CheckResult order_check_result(const MeshData& mesh, const check::Report& report,
+                                      std::uint64_t seed) {
+  check::CheckResult c;
+  c.id = "order.independence";
+  c.invariant =
+      "Remarks 1-2, Lemma 2: the mesh is DT(V) of its own vertices (symbolically perturbed), "
+      "whatever the insertion order";
+  for (const char* id : {"validity.indices", "validity.coordinates",
+                         "validity.duplicate_vertices"}) {
+    const check::CheckResult* v = report.find(id);
+    if (v && v->status != check::Status::Pass) {
+      c.status = check::Status::Skipped;
+      c.reason = std::string("the vertex set cannot be rebuilt (") + id + " did not pass)";
+      return c;
+    }
+  }
+  const OrderCheck oc = check_order_independence(mesh, seed, report.options.max_reported);
+  if (!oc.rebuilt) {
+    c.status = check::Status::Skipped;
+    c.reason = "the vertices do not span space: no DT(V) to rebuild";
+    return c;
+  }
+  c.checked = oc.tets;
+  c.violations = oc.missing - oc.ties;
+  c.counts["seed"] = oc.seed;
+  c.counts["missing"] = oc.missing;
+  c.counts["cospherical_ties"] = oc.ties;
+  for (std::size_t k = 0; k < oc.first.size(); ++k) {
+    check::Finding f;
+    f.kind = "tet";
+    f.id = oc.first_index[k];
+    const auto& t = mesh.tets[oc.first_index[k]];
+    f.vertices.assign(t.begin(), t.end());
+    const bool tie = oc.first_tie_vertex[k] >= 0;
+    if (tie) f.vertices.push_back(std::uint32_t(oc.first_tie_vertex[k]));
+    for (std::uint32_t v : f.vertices) f.points.push_back(mesh.points[v]);
+    f.message = "order.independence: tet " + std::to_string(oc.first_index[k]) +
+                " is not a tet of DT(V) rebuilt in another order" +
+                (tie ? " (a cospherical tie: its last vertex lies on the tet's circumsphere)"
+                     : "");
+    c.findings.push_back(std::move(f));
+  }
+  if (oc.missing == 0) {
+    c.status = check::Status::Pass;
+  } else if (c.violations == 0) {
+    c.status = check::Status::Warn;
+    c.reason = std::to_string(oc.ties) +
+               " tets differ from DT(V) only where vertices are cospherical: a Delaunay "
+               "tetrahedralization, with ties broken unlike pdr's symbolic perturbation";
+  } else {
+    c.status = check::Status::Fail;
+  }
+  return c;
+}
+
+}  // namespace
+
+void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed) {
+  const auto start = std::chrono::steady_clock::now();
+  check::CheckResult c = order_check_result(mesh, report, seed);
+  report.checks.push_back(std::move(c));
+  report.seconds["order"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace pdr::app

@@ -5,27 +5,54 @@
 // check_order_independence rebuilds DT(V) of the mesh's vertices from scratch by bulk
 // insertion in a seeded BRIO order (not the order the mesher inserted them in) and looks up
 // every mesh tet, as its sorted vertex quadruple, among DT(V)'s. Symbolic perturbation makes
-// DT(V) unique (docs/design.md §5), so every mesh tet must be found. With the checker's
-// validity.* (the tets form a tetrahedralization) and conformity.volume (they fill exactly
-// the domain), inclusion is equality with DT(V) restricted to the domain.
+// DT(V) unique (docs/design.md §5), so every mesh tet of pdr's must be found. With the
+// checker's validity.* (the tets form a tetrahedralization) and conformity.volume (they fill
+// exactly the domain), inclusion is equality with DT(V) restricted to the domain.
+//
+// Another mesher breaks ties among cospherical vertices its own way, so a missing tet is
+// classified: a *tie* when a vertex of DT(V) next to it lies exactly on its circumsphere
+// (exact insphere = 0). That classification is complete: a non-flat tet whose closed ball
+// holds no vertex inside (delaunay.empty_sphere) but is not in DT(V) has a fifth vertex w on
+// its sphere, and some tet of DT(V) at each of its vertices has such a w (the tets of DT(V)
+// at a vertex v of the cospherical cell cover the cell near v, and they cannot all have only
+// the four vertices of the missing tet). pdr mesh requires no missing tet at all;
+// `pdr check` (order_check_result) passes with none, warns when every one is a tie, and
+// fails otherwise.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "check/check.hpp"
 #include "mesh/mesh_data.hpp"
 
 namespace pdr::app {
 
+// The rebuild's BRIO seed in pdr mesh and pdr check: fixed (reproducible reports), and unlike
+// the kernel's default, so the rebuild inserts in another order than the mesher did.
+inline constexpr std::uint64_t kOrderCheckSeed = 0x0DE12;
+
 struct OrderCheck {
   std::uint64_t seed = 0;
+  bool rebuilt = false;                               // DT(V) was built (V spans space)
   std::size_t tets = 0;                               // mesh tets looked up
   std::size_t missing = 0;                            // not tets of the rebuilt DT(V)
-  std::vector<std::array<std::uint32_t, 4>> first;    // the first missing ones (sorted ids)
+  std::size_t ties = 0;                               // of those, cospherical ties
+  std::vector<std::array<std::uint32_t, 4>> first;    // the first missing (sorted ids)
+  std::vector<std::size_t> first_index;               // their indices in mesh.tets
+  std::vector<std::int64_t> first_tie_vertex;         // a vertex on the sphere, or -1
   bool ok() const { return missing == 0; }
 };
 
-OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed);
+// Lists the first `max_listed` missing tets.
+OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
+                                     std::size_t max_listed = 10);
+
+// The check `order.independence` of `pdr check` and pdr.check, appended to `report` after
+// the checker's own checks (its time as report.seconds["order"]): pass, warn (ties only),
+// fail, or skipped when the vertex set cannot be rebuilt (indices out of range, duplicate
+// or non-finite vertices: validity.* says why).
+void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed);
 
 }  // namespace pdr::app

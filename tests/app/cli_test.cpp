@@ -127,4 +127,30 @@ TEST_F(Cli, TetgenMeshOfABoxIsValidAndConforms) {
   }
 }
 
+// order.independence (app/order_check.hpp) in pdr check: TetGen without its optimisation
+// (-O0) leaves a Delaunay mesh whose cospherical ties may be broken unlike pdr's, which
+// passes or warns, never fails; pdr's own mesh equals DT(V) exactly.
+TEST_F(Cli, CheckRunsOrderIndependenceOnAnyMesher) {
+  auto order_status = [](const nlohmann::json& j) {
+    for (const auto& c : j["checks"])
+      if (c["id"] == "order.independence") return c["status"].get<std::string>();
+    return std::string("absent");
+  };
+  fs::copy_file(fs::path(PDR_DATA_DIR) / "cube-in-cube.poly", path("cc.poly"));
+  ASSERT_EQ(run("mesh " + path("cc.poly") + " -o " + path("own") + " --max-volume 0.1").code, 0);
+  const Outcome own = run("check " + path("own") + " --domain " + path("cc.poly") + " --json");
+  ASSERT_EQ(own.code, 0) << own.out;
+  EXPECT_EQ(order_status(nlohmann::json::parse(own.out)), "pass");
+  if (!on_path("tetgen")) GTEST_SKIP() << "tetgen not installed";
+  ASSERT_EQ(std::system(("cd " + dir_.string() + " && tetgen -pq1.4a0.1O0Q cc.poly").c_str()), 0);
+  const Outcome tg = run("check " + path("cc.1") + " --domain " + path("cc.poly") + " --json");
+  const auto j = nlohmann::json::parse(tg.out);
+  const std::string st = order_status(j);
+  EXPECT_TRUE(st == "pass" || st == "warn") << tg.out;
+  for (const auto& c : j["checks"])
+    if (c["id"] == "delaunay.empty_sphere") {
+      EXPECT_EQ(c["status"], "pass") << tg.out;
+    }
+}
+
 }  // namespace

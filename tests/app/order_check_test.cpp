@@ -1,15 +1,20 @@
 // The order-independence check (src/app/order_check.hpp): a Delaunay tetrahedralization
 // passes whatever the rebuild's seed; the other tetrahedralization of the same five points
-// (a 2-3 flip of a bipyramid) is found out, and so is one foreign tet.
+// (a 2-3 flip of a bipyramid) is found out, and so is one foreign tet. As `pdr check`'s
+// order.independence: a tetrahedralization of cospherical points that breaks the ties
+// unlike the symbolic perturbation warns (every missing tet a tie), a non-Delaunay one
+// fails, and a vertex set that cannot be rebuilt is skipped.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdint>
 
 #include "app/order_check.hpp"
+#include "check/check.hpp"
 #include "delaunay/bulk.hpp"
 #include "delaunay/delaunay.hpp"
 #include "delaunay/export.hpp"
+#include "geom/predicates.hpp"
 
 namespace pdr::app {
 namespace {
@@ -62,6 +67,78 @@ TEST(OrderCheck, KernelMeshPassesAndOneForeignTetIsFound) {
   for (std::uint64_t seed : {5u, 6u}) EXPECT_TRUE(check_order_independence(m, seed).ok());
   m.tets[0][0] = m.tets[0][0] == 0 ? 215u : 0u;  // far from the tet's other vertices
   EXPECT_EQ(check_order_independence(m, 5).missing, 1u);
+}
+
+check::CheckResult as_check(const MeshData& m) {
+  check::Report report = check::check_mesh(check::view_of(m), check::Options{});
+  add_order_check(report, m, kOrderCheckSeed);
+  EXPECT_EQ(report.checks.back().id, "order.independence");
+  EXPECT_EQ(report.seconds.count("order"), 1u);
+  return report.checks.back();
+}
+
+// The unit cube's eight corners are cospherical: each of its triangulations below is
+// Delaunay (no vertex strictly inside a sphere), and DT(V) is the one the perturbation picks.
+std::vector<MeshData> cube_triangulations() {
+  const std::vector<Point> corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                                      {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+  // Corner i = x + 2y + 4z. Two five-tet ones (a middle tet and four corners cut off) and
+  // Kuhn's six tets around the diagonal 0-7; each tet as given, oriented below.
+  const std::vector<std::vector<std::array<std::uint32_t, 4>>> splits = {
+      {{1, 2, 4, 7}, {0, 1, 2, 4}, {3, 1, 2, 7}, {5, 1, 4, 7}, {6, 2, 4, 7}},
+      {{0, 3, 5, 6}, {1, 0, 3, 5}, {2, 0, 3, 6}, {4, 0, 5, 6}, {7, 3, 5, 6}},
+      {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
+  std::vector<MeshData> out;
+  for (const auto& tets : splits) {
+    MeshData m;
+    m.points = corners;
+    for (auto t : tets) {
+      if (orient3d(corners[t[0]], corners[t[1]], corners[t[2]], corners[t[3]]) == Sign::Negative)
+        std::swap(t[0], t[1]);
+      m.tets.push_back(t);
+    }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+TEST(OrderCheck, CosphericalTiesBrokenAnotherWayWarnOnly) {
+  std::size_t warned = 0, passed = 0;
+  for (const MeshData& m : cube_triangulations()) {
+    const check::Report report = check::check_mesh(check::view_of(m), check::Options{});
+    ASSERT_TRUE(report.ok()) << check::to_text(report);  // valid and Delaunay
+    const OrderCheck oc = check_order_independence(m, kOrderCheckSeed);
+    EXPECT_EQ(oc.ties, oc.missing);  // every difference is a tie
+    const check::CheckResult c = as_check(m);
+    EXPECT_EQ(c.violations, 0u);
+    if (oc.missing == 0) {
+      EXPECT_EQ(c.status, check::Status::Pass);
+      ++passed;
+    } else {
+      EXPECT_EQ(c.status, check::Status::Warn);
+      EXPECT_EQ(c.counts.at("cospherical_ties"), oc.missing);
+      ASSERT_FALSE(c.findings.empty());
+      EXPECT_EQ(c.findings.front().vertices.size(), 5u);  // the tet and a vertex on its sphere
+      ++warned;
+    }
+  }
+  EXPECT_GE(warned, 2u);  // DT(V) is one triangulation; at least two of three differ
+  EXPECT_LE(passed, 1u);
+}
+
+TEST(OrderCheck, NonDelaunayFailsAndAnUnrebuildableSetIsSkipped) {
+  const check::CheckResult flipped = as_check(bipyramid(false));
+  EXPECT_EQ(flipped.status, check::Status::Fail);
+  EXPECT_EQ(flipped.violations, 3u);
+  EXPECT_EQ(flipped.counts.at("cospherical_ties"), 0u);
+  EXPECT_EQ(as_check(bipyramid(true)).status, check::Status::Pass);
+
+  MeshData dup = bipyramid(true);
+  dup.points.push_back(dup.points[0]);
+  dup.tets.push_back({5, 2, 1, 3});
+  const check::CheckResult skipped = as_check(dup);
+  EXPECT_EQ(skipped.status, check::Status::Skipped);
+  EXPECT_NE(skipped.reason.find("validity.duplicate_vertices"), std::string::npos);
 }
 
 }  // namespace
