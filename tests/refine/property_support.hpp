@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -100,6 +101,9 @@ void check_property(const std::string& name, int n, F property,
   rc::detail::TestParams params = rc::detail::configuration().testParams;
   params.maxSuccess = n;
   if (seed && !std::getenv("RC_PARAMS")) params.seed = *seed;
+  // Every run says how to repeat it (RapidCheck prints its configuration only once).
+  std::cout << name << ": " << n << " cases, seed " << params.seed << " (RC_PARAMS=\"seed="
+            << params.seed << "\" repeats it)" << std::endl;
   rc::detail::TestMetadata meta;
   meta.id = "RefineProperty/" + name;
   meta.description = name;
