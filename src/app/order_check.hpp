@@ -15,9 +15,11 @@
 // holds no vertex inside (delaunay.empty_sphere) but is not in DT(V) has a fifth vertex w on
 // its sphere, and some tet of DT(V) at each of its vertices has such a w (the tets of DT(V)
 // at a vertex v of the cospherical cell cover the cell near v, and they cannot all have only
-// the four vertices of the missing tet). pdr mesh requires no missing tet at all;
-// `pdr check` (order_check_result) passes with none, warns when every one is a tie, and
-// fails otherwise.
+// the four vertices of the missing tet). On a mesh that is not Delaunay a tet can have one
+// vertex on its sphere and another strictly inside, so `pdr check` counts ties only where
+// delaunay.empty_sphere passed: it passes with no missing tet, warns when every one is a
+// tie (on a Delaunay mesh every one must be: a missing tet that is not is a disagreement
+// between the two checks), and fails otherwise. pdr mesh requires no missing tet at all.
 #pragma once
 
 #include <array>
@@ -38,7 +40,7 @@ struct OrderCheck {
   bool rebuilt = false;                               // DT(V) was built (V spans space)
   std::size_t tets = 0;                               // mesh tets looked up
   std::size_t missing = 0;                            // not tets of the rebuilt DT(V)
-  std::size_t ties = 0;                               // of those, cospherical ties
+  std::size_t ties = 0;                               // of those, with a vertex on the sphere
   std::vector<std::array<std::uint32_t, 4>> first;    // the first missing (sorted ids)
   std::vector<std::size_t> first_index;               // their indices in mesh.tets
   std::vector<std::int64_t> first_tie_vertex;         // a vertex on the sphere, or -1

@@ -3,7 +3,8 @@
 // (a 2-3 flip of a bipyramid) is found out, and so is one foreign tet. As `pdr check`'s
 // order.independence: a tetrahedralization of cospherical points that breaks the ties
 // unlike the symbolic perturbation warns (every missing tet a tie), a non-Delaunay one
-// fails, and a vertex set that cannot be rebuilt is skipped.
+// fails (also where a vertex lies on a sphere that another vertex is strictly inside), and
+// a vertex set that cannot be rebuilt is skipped.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -132,6 +133,17 @@ TEST(OrderCheck, NonDelaunayFailsAndAnUnrebuildableSetIsSkipped) {
   EXPECT_EQ(flipped.violations, 3u);
   EXPECT_EQ(flipped.counts.at("cospherical_ties"), 0u);
   EXPECT_EQ(as_check(bipyramid(true)).status, check::Status::Pass);
+
+  // A vertex strictly inside every sphere of the cube's tets (its centre, in no tet):
+  // every tet also has a corner exactly on its sphere, but no difference is a tie here.
+  for (MeshData m : cube_triangulations()) {
+    m.points.push_back({0.5, 0.5, 0.5});
+    const check::CheckResult c = as_check(m);
+    EXPECT_EQ(c.status, check::Status::Fail);
+    EXPECT_EQ(c.violations, m.tets.size());
+    EXPECT_EQ(c.counts.at("cospherical_ties"), 0u);
+    EXPECT_GT(check_order_independence(m, kOrderCheckSeed).ties, 0u);
+  }
 
   MeshData dup = bipyramid(true);
   dup.points.push_back(dup.points[0]);
