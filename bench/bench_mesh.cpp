@@ -30,16 +30,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <metis.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "app/partitioned_output.hpp"
 #include "io/mesh_io.hpp"
 #include "refine/quality.hpp"
 
@@ -189,6 +192,85 @@ nlohmann::json summary_of(const fs::path& log) {
   return j.is_discarded() ? nlohmann::json::object() : j;
 }
 
+// The paper's Table 2: what a parallel run saves over the sequential alternative of getting
+// a partitioned mesh, which is to mesh sequentially, partition the final mesh with METIS
+// (its dual graph over shared faces, METIS_PartMeshDual), write the parts and read them
+// back. Times the three steps after the mesh, in this process, on the sequential output
+// at `prefix`: the read of that output, METIS, writing PREFIX.pvtu with one .vtu piece per
+// part (app/partitioned_output.hpp, as `mpirun -np P pdr mesh --formats vtu` writes it),
+// and reading every piece.
+struct Table2 {
+  double read = 0, partition = 0, write = 0, reread = 0;
+  std::size_t tets = 0, pieces_tets = 0;
+  bool ok = false;
+  double total() const { return read + partition + write + reread; }
+};
+
+Table2 sequential_pipeline(const std::string& prefix, int parts) {
+  Table2 r;
+  try {
+    auto t0 = Clock::now();
+    auto lap = [&t0] {
+      const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+      t0 = Clock::now();
+      return s;
+    };
+    const pdr::MeshData m = pdr::io::read_mesh(prefix);
+    r.read = lap();
+    r.tets = m.tets.size();
+    idx_t ne = static_cast<idx_t>(m.tets.size()), nn = static_cast<idx_t>(m.points.size());
+    idx_t ncommon = 3, nparts = parts, objval = 0;
+    std::vector<idx_t> eptr(m.tets.size() + 1), eind(4 * m.tets.size());
+    for (std::size_t i = 0; i < m.tets.size(); ++i) {
+      eptr[i + 1] = static_cast<idx_t>(4 * (i + 1));
+      for (int k = 0; k < 4; ++k) eind[4 * i + k] = static_cast<idx_t>(m.tets[i][k]);
+    }
+    std::vector<idx_t> epart(m.tets.size()), npart(m.points.size());
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    if (METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr, &ncommon,
+                           &nparts, nullptr, options, &objval, epart.data(),
+                           npart.data()) != METIS_OK)
+      return r;
+    std::vector<std::uint32_t> owner(epart.begin(), epart.end());
+    r.partition = lap();
+    const std::vector<std::string> files =
+        pdr::app::write_partitioned_vtu(m, owner, parts, prefix + "_table2");
+    r.write = lap();
+    for (const std::string& f : files)
+      if (f.size() > 4 && f.compare(f.size() - 4, 4, ".vtu") == 0)
+        r.pieces_tets += pdr::io::read_mesh(f).tets.size();
+    r.reread = lap();
+    r.ok = r.pieces_tets == r.tets;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_mesh: Table 2 on %s: %s\n", prefix.c_str(), e.what());
+  }
+  return r;
+}
+
+// The paper's Table 1 for each rank of a parallel run's summary, and for the worst rank
+// (the one whose parallel phase took longest), in seconds (docs/parallel.md).
+void print_table1(const nlohmann::json& parallel) {
+  if (!parallel.contains("per_rank")) return;
+  std::printf("  Table 1 (np=2, seconds): rank | execution | completed cavity local, distributed "
+              "| masked local, distributed | setback | latency tolerance | poll (excess)\n");
+  const int worst = parallel.value("worst_rank", -1);
+  for (const auto& r : parallel.at("per_rank")) {
+    if (!r.contains("table1")) continue;
+    const auto& t = r.at("table1");
+    std::printf("    %d%s | %.3f | %.3f, %.3f | %.3f, %.3f | %.3f | %.1f%% | %.3f (%.3f)\n",
+                r.at("rank").get<int>(), r.at("rank").get<int>() == worst ? " (worst)" : "",
+                t.at("execution_seconds").get<double>(),
+                t.at("completed_cavity_seconds").at("local").get<double>(),
+                t.at("completed_cavity_seconds").at("distributed").get<double>(),
+                t.at("masked_seconds").at("local").get<double>(),
+                t.at("masked_seconds").at("distributed").get<double>(),
+                t.at("setback_seconds").get<double>(),
+                100 * t.at("latency_tolerance").get<double>(), t.at("poll_seconds").get<double>(),
+                t.at("poll_excess_seconds").get<double>());
+  }
+}
+
 // --parallel: the sequential command, np = 1, np = 2 and TetGen on one case.
 bool parallel_case(const std::string& pdr, const std::string& tetgen, const fs::path& poly,
                    const std::string& volume, const fs::path& dir) {
@@ -204,6 +286,7 @@ bool parallel_case(const std::string& pdr, const std::string& tetgen, const fs::
   };
   const Run seq = run_child(mesh, dir / "seq.log");
   const Quality sq = measure(prefix);
+  const Table2 t2 = sequential_pipeline(prefix, 2);
   const Run np1 = run_child(mpirun(1), dir / "np1.log");
   const Run np2 = run_child(mpirun(2), dir / "np2.log");
   const Quality pq = measure(prefix);
@@ -229,6 +312,13 @@ bool parallel_case(const std::string& pdr, const std::string& tetgen, const fs::
     for (const auto& [k, v] : j.at("seconds").items()) std::printf(" %s %.2f s", k.c_str(), v.get<double>());
     std::printf("\n");
   }
+  std::printf("  Table 2 (2 parts): sequential pipeline %.2f s = mesh %.2f + read %.2f + METIS "
+              "%.2f + write %.2f + read the pieces %.2f (%s); parallel pipeline (np=2) "
+              "%.2f s: %.2fx faster\n",
+              seq.wall + t2.total(), seq.wall, t2.read, t2.partition, t2.write, t2.reread,
+              t2.ok ? "every tet in one piece" : "FAILED", np2.wall,
+              (seq.wall + t2.total()) / np2.wall);
+  if (j.contains("parallel")) print_table1(j.at("parallel"));
   if (j.contains("parallel"))
     for (const auto& r : j.at("parallel").at("per_rank"))
       std::printf("  rank %d: %.2f s phase, %.2f s busy (%.0f%%), %llu commits (%llu while "
