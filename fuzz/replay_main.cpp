@@ -1,7 +1,7 @@
 // Replays fuzz inputs without libFuzzer: every file under the directories given on the
 // command line, then N seeded pseudo-random inputs (--random N, lengths 0..512), each
 // mutated from a corpus file when there is one. A failing input aborts (the target calls
-// std::abort), so CTest reports it; save it under fuzz/corpus/ and tests/regress/.
+// std::abort), so CTest reports it; once fixed, keep it in tests/regress/fuzz/CORPUS/.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>

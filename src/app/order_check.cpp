@@ -8,7 +8,7 @@
 
 #include "delaunay/bulk.hpp"
 #include "delaunay/delaunay.hpp"
-#include "geom/exact.hpp"
+#include "geom/predicates.hpp"
 
 namespace pdr::app {
 
@@ -49,11 +49,11 @@ std::vector<std::int64_t> tie_vertices(const MeshData& mesh, const std::vector<Q
     const Point &a = mesh.points[m[0]], &b = mesh.points[m[1]], &c = mesh.points[m[2]],
                 &d = mesh.points[m[3]];
     std::int64_t tie = -1;
-    if (exact::orient3d(a, b, c, d) != Sign::Zero)
+    if (orient3d(a, b, c, d) != Sign::Zero)
       for (std::uint32_t v : m) {
         for (std::uint32_t w : around[slot[v]]) {
           if (std::find(m.begin(), m.end(), w) != m.end()) continue;
-          if (exact::insphere(a, b, c, d, mesh.points[w]) == Sign::Zero) {
+          if (insphere(a, b, c, d, mesh.points[w]) == Sign::Zero) {
             tie = w;
             break;
           }
@@ -68,7 +68,7 @@ std::vector<std::int64_t> tie_vertices(const MeshData& mesh, const std::vector<Q
 }  // namespace
 
 OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
-                                     std::size_t max_listed) {
+                                     std::size_t max_listed, bool find_ties) {
   OrderCheck r;
   r.seed = seed;
   r.tets = mesh.tets.size();
@@ -101,7 +101,7 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
     }
   }
   r.missing = missing.size();
-  if (r.rebuilt && !missing.empty()) {
+  if (find_ties && r.rebuilt && !missing.empty()) {
     const std::vector<std::int64_t> tie = tie_vertices(mesh, all, missing);
     r.ties = std::size_t(std::count_if(tie.begin(), tie.end(), [](std::int64_t w) { return w >= 0; }));
     r.first_tie_vertex.assign(tie.begin(), tie.begin() + std::ptrdiff_t(r.first.size()));
@@ -129,19 +129,20 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
       return c;
     }
   }
-  const OrderCheck oc = check_order_independence(mesh, seed, report.options.max_reported);
+  // A tie is a difference of tie-breaking only on a Delaunay mesh: a tet with a vertex
+  // strictly inside its sphere can have another one exactly on it.
+  const check::CheckResult* empty = report.find("delaunay.empty_sphere");
+  const bool delaunay = empty && empty->status == check::Status::Pass;
+  const OrderCheck oc =
+      check_order_independence(mesh, seed, report.options.max_reported, delaunay);
   if (!oc.rebuilt) {
     c.status = check::Status::Skipped;
     c.reason = "the vertices do not span space: no DT(V) to rebuild";
     return c;
   }
-  // A tie is a difference of tie-breaking only on a Delaunay mesh: a tet with a vertex
-  // strictly inside its sphere can have another one exactly on it.
-  const check::CheckResult* empty = report.find("delaunay.empty_sphere");
-  const bool delaunay = empty && empty->status == check::Status::Pass;
-  const std::size_t ties = delaunay ? oc.ties : 0;
+  const std::size_t ties = oc.ties;
   c.checked = oc.tets;
-  c.violations = oc.missing - ties;
+  c.violations = oc.missing;  // flagged: failures, or with status warn, ties
   c.counts["seed"] = oc.seed;
   c.counts["missing"] = oc.missing;
   c.counts["cospherical_ties"] = ties;
@@ -151,7 +152,7 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
     f.id = oc.first_index[k];
     const auto& t = mesh.tets[oc.first_index[k]];
     f.vertices.assign(t.begin(), t.end());
-    const bool tie = delaunay && oc.first_tie_vertex[k] >= 0;
+    const bool tie = oc.first_tie_vertex[k] >= 0;
     if (tie) f.vertices.push_back(std::uint32_t(oc.first_tie_vertex[k]));
     for (std::uint32_t v : f.vertices) f.points.push_back(mesh.points[v]);
     f.message = "order.independence: tet " + std::to_string(oc.first_index[k]) +
@@ -162,7 +163,7 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
   }
   if (oc.missing == 0) {
     c.status = check::Status::Pass;
-  } else if (c.violations == 0) {
+  } else if (ties == oc.missing) {
     c.status = check::Status::Warn;
     c.reason = std::to_string(ties) +
                " tets differ from DT(V) only where vertices are cospherical: a Delaunay "

@@ -47,13 +47,15 @@ struct OrderCheck {
   bool ok() const { return missing == 0; }
 };
 
-// Lists the first `max_listed` missing tets.
+// Lists the first `max_listed` missing tets; classifies ties only with `find_ties` (on a
+// mesh not known to be Delaunay they would mean nothing, and there may be many).
 OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
-                                     std::size_t max_listed = 10);
+                                     std::size_t max_listed = 10, bool find_ties = true);
 
 // The check `order.independence` of `pdr check` and pdr.check, appended to `report` after
 // the checker's own checks (its time as report.seconds["order"]): pass, warn (ties only),
-// fail, or skipped when the vertex set cannot be rebuilt (indices out of range, duplicate
+// fail, or skipped; `violations` counts every missing tet (ties too, when it warns), and
+// the findings list them when the vertex set cannot be rebuilt (indices out of range, duplicate
 // or non-finite vertices: validity.* says why).
 void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed);
 

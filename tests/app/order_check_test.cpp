@@ -15,6 +15,7 @@
 #include "delaunay/bulk.hpp"
 #include "delaunay/delaunay.hpp"
 #include "delaunay/export.hpp"
+#include "geom/exact.hpp"
 #include "geom/predicates.hpp"
 
 namespace pdr::app {
@@ -111,7 +112,12 @@ TEST(OrderCheck, CosphericalTiesBrokenAnotherWayWarnOnly) {
     const OrderCheck oc = check_order_independence(m, kOrderCheckSeed);
     EXPECT_EQ(oc.ties, oc.missing);  // every difference is a tie
     const check::CheckResult c = as_check(m);
-    EXPECT_EQ(c.violations, 0u);
+    EXPECT_EQ(c.violations, oc.missing);  // flagged, as ties
+    for (const check::Finding& f : c.findings) {  // the fifth vertex is on the sphere
+      ASSERT_EQ(f.points.size(), 5u);
+      EXPECT_EQ(exact::insphere(f.points[0], f.points[1], f.points[2], f.points[3], f.points[4]),
+                Sign::Zero);
+    }
     if (oc.missing == 0) {
       EXPECT_EQ(c.status, check::Status::Pass);
       ++passed;
@@ -128,6 +134,8 @@ TEST(OrderCheck, CosphericalTiesBrokenAnotherWayWarnOnly) {
 }
 
 TEST(OrderCheck, NonDelaunayFailsAndAnUnrebuildableSetIsSkipped) {
+  // The other tetrahedralization of five points in general position: no tie anywhere.
+  EXPECT_EQ(check_order_independence(bipyramid(false), kOrderCheckSeed).ties, 0u);
   const check::CheckResult flipped = as_check(bipyramid(false));
   EXPECT_EQ(flipped.status, check::Status::Fail);
   EXPECT_EQ(flipped.violations, 3u);
