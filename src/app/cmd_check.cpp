@@ -79,10 +79,12 @@ int run_check(const CheckArgs& args) {
   const bool every_finding = args.explain || args.vtu;
   opt.max_reported = every_finding ? std::numeric_limits<std::size_t>::max() : args.max_reported;
   const auto view = check::view_of(mesh);
+  // DT(V) for order.independence is rebuilt meanwhile on another thread.
+  auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);
   check::Report report =
       domain ? check::check_mesh(view, *domain, opt) : check::check_mesh(view, opt);
   if (progress.enabled()) progress.phase("check: order independence");
-  add_order_check(report, mesh, kOrderCheckSeed);
+  add_order_check(report, mesh, kOrderCheckSeed, std::move(rebuilt));
   timer.lap("check");
   progress.finish();
 

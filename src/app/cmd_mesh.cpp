@@ -264,6 +264,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
+    // Remarks 1-2 (below): DT(V) is rebuilt meanwhile on another thread.
+    auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);
     const check::Report report = check::check_mesh(check::view_of(mesh), an.domain.plc, co);
     timer.lap("check");
     // quality.ratio failing is what exit 3 already reports; so is encroachment on an
@@ -287,7 +289,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     // Remarks 1-2: the mesh is DT(V) restricted to the domain, whatever the insertion
     // order (order_check.hpp); rebuilt here in a seeded order unlike the mesher's.
     progress.phase("order check");
-    const OrderCheck oc = check_order_independence(mesh, kOrderCheckSeed);
+    const OrderCheck oc = check_order_independence(mesh, rebuilt.get(), kOrderCheckSeed);
     timer.lap("order_check");
     summary.set("order_independence",
                 nlohmann::json{{"seed", oc.seed}, {"tets", oc.tets}, {"missing", oc.missing},

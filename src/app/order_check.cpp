@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "delaunay/bulk.hpp"
@@ -67,28 +68,47 @@ std::vector<std::int64_t> tie_vertices(const MeshData& mesh, const std::vector<Q
 
 }  // namespace
 
-OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
-                                     std::size_t max_listed, bool find_ties) {
-  OrderCheck r;
-  r.seed = seed;
-  r.tets = mesh.tets.size();
-  Delaunay dt(mesh.points);
+RebuiltDt rebuild_dt(std::span<const Point> points, std::uint64_t seed) {
+  RebuiltDt r;
+  for (const Point& p : points)
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return r;
+  Delaunay dt(std::vector<Point>(points.begin(), points.end()));
   BulkOptions o;
   o.seed = seed;
   o.renumber = false;  // vertex ids stay the mesh's
-  const BulkResult b = bulk_insert(dt, o);
-  std::vector<Quad> all;
-  r.rebuilt = b.status == BulkStatus::Ok;
-  if (r.rebuilt) {
-    const TetStore& s = dt.store();
-    all.reserve(s.live());
-    for (TetId t = 0; t < s.slots(); ++t)
-      if (s.is_alive(t) && !s.is_ghost(t)) {
-        const VertexId* v = s.vertices(t);
-        all.push_back(sorted({v[0], v[1], v[2], v[3]}));
-      }
-    std::sort(all.begin(), all.end());
-  }
+  r.rebuilt = bulk_insert(dt, o).status == BulkStatus::Ok;
+  if (!r.rebuilt) return r;
+  const TetStore& s = dt.store();
+  r.tets.reserve(s.live());
+  for (TetId t = 0; t < s.slots(); ++t)
+    if (s.is_alive(t) && !s.is_ghost(t)) {
+      const VertexId* v = s.vertices(t);
+      r.tets.push_back(sorted({v[0], v[1], v[2], v[3]}));
+    }
+  std::sort(r.tets.begin(), r.tets.end());
+  return r;
+}
+
+std::future<RebuiltDt> start_rebuild(std::span<const Point> points, std::uint64_t seed,
+                                     bool concurrent) {
+  return std::async(concurrent ? std::launch::async : std::launch::deferred,
+                    [points, seed] { return rebuild_dt(points, seed); });
+}
+
+OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
+                                     std::size_t max_listed, bool find_ties) {
+  return check_order_independence(mesh, rebuild_dt(mesh.points, seed), seed, max_listed,
+                                  find_ties);
+}
+
+OrderCheck check_order_independence(const MeshData& mesh, const RebuiltDt& dt,
+                                     std::uint64_t seed, std::size_t max_listed,
+                                     bool find_ties) {
+  OrderCheck r;
+  r.seed = seed;
+  r.tets = mesh.tets.size();
+  r.rebuilt = dt.rebuilt;
+  const std::vector<Quad>& all = dt.tets;
   std::vector<std::size_t> missing;
   for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
     const auto& t = mesh.tets[i];
@@ -114,7 +134,7 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
 namespace {
 
 check::CheckResult order_check_result(const MeshData& mesh, const check::Report& report,
-                                      std::uint64_t seed) {
+                                      std::uint64_t seed, std::future<RebuiltDt> rebuilt) {
   check::CheckResult c;
   c.id = "order.independence";
   c.invariant =
@@ -133,8 +153,8 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
   // strictly inside its sphere can have another one exactly on it.
   const check::CheckResult* empty = report.find("delaunay.empty_sphere");
   const bool delaunay = empty && empty->status == check::Status::Pass;
-  const OrderCheck oc =
-      check_order_independence(mesh, seed, report.options.max_reported, delaunay);
+  const OrderCheck oc = check_order_independence(mesh, rebuilt.get(), seed,
+                                                report.options.max_reported, delaunay);
   if (!oc.rebuilt) {
     c.status = check::Status::Skipped;
     c.reason = "the vertices do not span space: no DT(V) to rebuild";
@@ -176,9 +196,10 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
 
 }  // namespace
 
-void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed) {
+void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed,
+                     std::future<RebuiltDt> rebuilt) {
   const auto start = std::chrono::steady_clock::now();
-  check::CheckResult c = order_check_result(mesh, report, seed);
+  check::CheckResult c = order_check_result(mesh, report, seed, std::move(rebuilt));
   report.checks.push_back(std::move(c));
   report.seconds["order"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -24,6 +24,8 @@
 
 #include <array>
 #include <cstdint>
+#include <future>
+#include <span>
 #include <vector>
 
 #include "check/check.hpp"
@@ -47,8 +49,24 @@ struct OrderCheck {
   bool ok() const { return missing == 0; }
 };
 
+// DT(V) rebuilt from the points alone (its finite tets as sorted vertex quadruples), so it
+// can run while the checker reads the tets: rebuilt is false when the points do not span
+// space (or are not all finite: nothing is built then).
+struct RebuiltDt {
+  bool rebuilt = false;
+  std::vector<std::array<std::uint32_t, 4>> tets;  // sorted
+};
+RebuiltDt rebuild_dt(std::span<const Point> points, std::uint64_t seed);
+// The rebuild on another thread (`concurrent`), or on the caller's when the result is
+// asked for. `points` must outlive the future.
+std::future<RebuiltDt> start_rebuild(std::span<const Point> points, std::uint64_t seed,
+                                     bool concurrent);
+
 // Lists the first `max_listed` missing tets; classifies ties only with `find_ties` (on a
 // mesh not known to be Delaunay they would mean nothing, and there may be many).
+OrderCheck check_order_independence(const MeshData& mesh, const RebuiltDt& dt,
+                                     std::uint64_t seed, std::size_t max_listed = 10,
+                                     bool find_ties = true);
 OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
                                      std::size_t max_listed = 10, bool find_ties = true);
 
@@ -57,6 +75,8 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
 // fail, or skipped; `violations` counts every missing tet (ties too, when it warns), and
 // the findings list them when the vertex set cannot be rebuilt (indices out of range, duplicate
 // or non-finite vertices: validity.* says why).
-void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed);
+// `rebuilt` is start_rebuild(mesh.points, seed, ...), begun before the checker ran.
+void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed,
+                     std::future<RebuiltDt> rebuilt);
 
 }  // namespace pdr::app
