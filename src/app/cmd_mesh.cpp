@@ -129,6 +129,19 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   c->add_option("--inject-latency", a.inject_latency_us,
                 "Under mpirun: hold every message that many microseconds before delivery")
       ->check(CLI::Range(0, 10'000'000));
+  c->add_option("--submeshes", a.submeshes,
+                "Under mpirun: cut M_o into N submeshes, at least one per rank (submesh k on "
+                "rank k mod P; 0: one per rank)")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            const long long n = std::stoll(text);
+            if (n != 0 && n < world().size)
+              return "at least one submesh per rank: " + text + " for " +
+                     std::to_string(world().size) + " ranks";
+            if (n > 1'000'000) return "at most 1000000 submeshes";
+            return "";
+          },
+          "N >= ranks"));
   return c;
 }
 
@@ -176,7 +189,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   double t_before = 0;  // parallel runs: the phases before rank 0's completion
   VertexOwners owners;  // parallel runs: who made each vertex (PREFIX.pvtu)
   std::optional<refine::RefineResult> refined =
-      world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.inject_latency_us,
+      world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.submeshes,
+                                            args.inject_latency_us,
                                             args.seed, summary, timer, t_before, owners)
                        : refine::refine(vm, opt);
   if (!refined) return kExitOk;  // not rank 0: rank 0 writes, checks and decides the code

@@ -52,6 +52,7 @@ struct MeshArgs {
   unsigned threads = 2;
   std::size_t initial_tets = 0;        // mpirun: M_o's interior size (0: automatic)
   std::uint64_t inject_latency_us = 0; // mpirun: each message held this long
+  std::size_t submeshes = 0;          // mpirun: submeshes of M_o, >= ranks (0: one per rank)
   surface::SurfaceSizing surface_sizing = surface::SurfaceSizing::Auto;  // surface/init.hpp
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);

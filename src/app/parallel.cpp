@@ -146,6 +146,7 @@ World& world() {
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
+                                                       std::size_t submeshes,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,
@@ -168,7 +169,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   par::Partition part;
   if (distribute) {
     try {
-      part = par::partition_tets(vm.dt.store(), vm.inside, static_cast<std::uint32_t>(w.size), seed);
+      const auto parts = static_cast<std::uint32_t>(submeshes == 0 ? std::size_t(w.size) : submeshes);
+      part = par::partition_tets(vm.dt.store(), vm.inside, parts, seed);
       par::RankResult mine;
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
@@ -203,8 +205,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     for (TetId t = 0; t < part.part.size(); ++t) {
       if (part.part[t] == par::kNoPart || s.vertex(t, 3) >= kFirstSpecialVertex) continue;  // ghosts too
       for (int k = 0; k < 4; ++k) {
-        const auto [it, fresh] = owners.initial.emplace(vm.dt.point(s.vertex(t, k)), part.part[t]);
-        if (!fresh) it->second = std::min(it->second, part.part[t]);
+        const std::uint32_t rank = part.part[t] % static_cast<std::uint32_t>(w.size);
+        const auto [it, fresh] = owners.initial.emplace(vm.dt.point(s.vertex(t, k)), rank);
+        if (!fresh) it->second = std::min(it->second, rank);
       }
     }
   }
@@ -223,6 +226,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                          {"worst_rank", figures.empty() ? nlohmann::json(nullptr)
                                                                         : nlohmann::json(worst)},
                                          {"ranks", w.size},
+                                         {"submeshes", distribute ? part.parts : 0u},
                                          {"injected_latency_us", latency_us},
                                          {"distributed", distribute},
                                          {"initial_tets", m0_tets},

@@ -48,11 +48,13 @@ class RunAbandoned : public std::runtime_error {
 // the completion, with the parallel figures in the summary (object "parallel") and on
 // stderr; elsewhere nullopt (rank 0 finishes the run). `seconds` gets the wall time of the
 // phases before the completion (coarse, parallel, gather, absorb). `latency_us` > 0: every
-// message of the parallel phase is held that long before it is delivered. `owners` gets,
+// message of the parallel phase is held that long before it is delivered. `submeshes`
+// N >= P (0: P) parts of M_o, submesh k on rank k mod P (par/actor_mux.hpp). `owners` gets,
 // on rank 0, who made each vertex (app/partitioned_output.hpp).
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
+                                                       std::size_t submeshes,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,

@@ -22,6 +22,19 @@ Bytes migration_message(std::uint64_t search, bool walk, const Migration& m) {
 
 }  // namespace
 
+InsertionStats& operator+=(InsertionStats& a, const InsertionStats& b) {
+  a.commits += b.commits, a.rounds += b.rounds, a.setbacks += b.setbacks;
+  a.duplicates += b.duplicates, a.fetches_served += b.fetches_served, a.refused += b.refused;
+  a.tets_sent += b.tets_sent, a.points_passed += b.points_passed, a.deferred += b.deferred;
+  a.gone += b.gone, a.local_while_waiting += b.local_while_waiting;
+  a.completed_local_s += b.completed_local_s;
+  a.completed_distributed_s += b.completed_distributed_s;
+  a.masked_local_s += b.masked_local_s, a.masked_distributed_s += b.masked_distributed_s;
+  a.setback_s += b.setback_s, a.served_s += b.served_s, a.other_s += b.other_s;
+  a.poll_s += b.poll_s, a.poll_excess_s += b.poll_excess_s;
+  return a;
+}
+
 InsertionActor::InsertionActor(Transport& t, Submesh sub, std::uint64_t seed, StepRules* rules)
     : t_(t),
       sub_(std::move(sub)),

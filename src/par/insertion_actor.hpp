@@ -74,6 +74,9 @@ struct InsertionStats {
   double poll_s = 0, poll_excess_s = 0;
 };
 
+// Field by field (several actors of one rank: par/par_refinement.hpp).
+InsertionStats& operator+=(InsertionStats& a, const InsertionStats& b);
+
 class InsertionActor {
  public:
   // The rank's transport (rank r holds submesh r); `seed` seeds the back-off; `rules`

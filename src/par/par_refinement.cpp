@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <numeric>
+#include <optional>
 
 #include "delaunay/spatial_sort.hpp"
+#include "par/actor_mux.hpp"
 #include "par/idle.hpp"
 
 namespace pdr::par {
@@ -15,36 +18,61 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
                        const refine::TetBounds& bounds, std::uint64_t seed) {
   using Clock = std::chrono::steady_clock;
   RefinementRules rules(m0, bounds);
-  InsertionActor actor(t,
-                       Submesh::extract(static_cast<ActorId>(t.rank()), m0.dt.store(),
-                                        m0.dt.points(), m0.inside, part),
-                       seed, &rules);
+  // One actor per submesh of this rank: with N == P the rank's transport itself, else the
+  // ports of a mux (par/actor_mux.hpp).
+  const int n = static_cast<int>(part.parts);
+  std::optional<ActorMux> mux;
+  if (n != t.size()) mux.emplace(t, n);
+  std::vector<Transport*> ports;
+  std::vector<std::unique_ptr<InsertionActor>> actors;
+  for (int k = t.rank(); k < n; k += t.size()) {
+    Transport& port = mux ? mux->port(k) : t;
+    ports.push_back(&port);
+    actors.push_back(std::make_unique<InsertionActor>(
+        port,
+        Submesh::extract(static_cast<ActorId>(k), m0.dt.store(), m0.dt.points(), m0.inside,
+                         part),
+        seed, &rules));
+  }
   RankResult out;
   RankFigures& f = out.figures;
-  f.start_tets = actor.submesh().real_tets();
+  for (const auto& a : actors) f.start_tets += a->submesh().real_tets();
   const auto start = Clock::now();
-  actor.add_wanted_tets();
+  for (const auto& a : actors) a->add_wanted_tets();
   IdlePolicy idle;
   Clock::duration busy{};
-  for (;;) {
-    const auto before = Clock::now();
-    const bool done = actor.step();
-    if (actor.worked()) busy += Clock::now() - before;
-    if (done) break;
-    idle.after_iteration(actor.worked(), actor.waiting());
+  std::vector<std::uint8_t> done(actors.size(), 0);
+  for (std::size_t left = actors.size(); left > 0;) {
+    bool worked = false, waiting = false;
+    for (std::size_t i = 0; i < actors.size(); ++i) {
+      if (done[i]) continue;
+      InsertionActor& a = *actors[i];
+      const auto before = Clock::now();
+      const bool finished = a.step();
+      if (a.worked()) busy += Clock::now() - before;
+      worked = worked || a.worked();
+      waiting = waiting || a.waiting();
+      if (finished) done[i] = 1, --left;
+    }
+    if (left > 0) idle.after_iteration(worked, waiting);
   }
   f.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   f.busy_seconds = std::chrono::duration<double>(busy).count();
-  f.steps = actor.stats();
+  for (const auto& a : actors) {
+    f.steps += a->stats();
+    f.final_tets += a->submesh().real_tets();
+    out.points.insert(out.points.end(), a->committed_points().begin(),
+                      a->committed_points().end());
+  }
   f.deferred = rules.deferred();
-  f.messages_sent = t.sent();
-  f.messages_received = t.received();
-  f.bytes_sent = t.bytes_sent();
+  for (const Transport* p : ports) {
+    f.messages_sent += p->sent();
+    f.messages_received += p->received();
+    f.bytes_sent += p->bytes_sent();
+  }
   f.empty_polls = idle.empty_iterations();
   f.sleeps = idle.sleeps();
-  f.final_tets = actor.submesh().real_tets();
-  out.points = actor.committed_points();
-  out.figures.points = out.points.size();
+  f.points = out.points.size();
   return out;
 }
 

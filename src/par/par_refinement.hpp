@@ -2,7 +2,8 @@
 // sequential completion needs from it (docs/parallel.md).
 //
 // Every rank holds the same mesh M_o (built deterministically from the same input) and the
-// same METIS partition of it (par/partition.hpp); rank r keeps part r as its submesh
+// same METIS partition of it into N >= P parts (par/partition.hpp); rank r keeps parts
+// r, r + P, ... as its submeshes
 // (par/submesh.hpp) and refines its bad tets with the InsertionActor's protocol and
 // RefinementRules (par/refinement_rules.hpp): distributed cavities pulled to the root,
 // closure locks, setbacks with seeded back-off, termination detection. Steps that would
@@ -43,7 +44,10 @@ struct RankResult {
   RankFigures figures;
 };
 
-// The parallel phase on this rank (transport t: rank r holds part r; t.size() == parts).
+// The parallel phase on this rank (transport t). Submesh k of part.parts >= t.size() lives
+// on rank k % t.size(): one actor each, the rank's transport itself when there are as many
+// submeshes as ranks, else the ports of an ActorMux (par/actor_mux.hpp). The figures are
+// the rank's: its actors' summed.
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
                        const refine::TetBounds& bounds, std::uint64_t seed);
 

@@ -6,6 +6,7 @@
 #   [-DWANT_ONCE=text]    stderr holds `text` exactly once (a message from one rank only)
 #   [-DWANT_NO_OUTPUT=ON] no file starts with OUT (nothing half-written)
 #   [-DWANT_PVTU=ON]      OUT.pvtu names NP pieces OUT_p<r>.vtu whose tets add up to the mesh's
+#   [-DWANT_SUBMESHES=n]  the parallel phase cut M_o into n submeshes
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 execute_process(
   COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${PDR} mesh ${DOMAIN} -o ${OUT} ${args} --json
@@ -43,6 +44,12 @@ if(WANT_PARALLEL)
   endforeach()
   if(NOT err MATCHES "table 1: +worst")
     message(FATAL_ERROR "no Table 1 on stderr:\n${err}")
+  endif()
+endif()
+if(WANT_SUBMESHES)
+  string(JSON submeshes GET "${out}" parallel submeshes)
+  if(NOT submeshes EQUAL WANT_SUBMESHES)
+    message(FATAL_ERROR "parallel: ${submeshes} submeshes, expected ${WANT_SUBMESHES}\n${out}")
   endif()
 endif()
 if(WANT_ONCE)
