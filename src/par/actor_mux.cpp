@@ -20,7 +20,10 @@ class ActorMux::Port final : public Transport {
   Port(ActorMux& mux, int actor) : mux_(mux), actor_(actor) {}
   int rank() const override { return actor_; }
   int size() const override { return mux_.actors_; }
-  void start_reduction(const Reduction& mine) override { mux_.contribute(rounds_++, mine); }
+  void start_reduction(const Reduction& mine) override {
+    if (read_ != rounds_) throw std::logic_error("ActorMux: a round started before the last one was read");
+    mux_.contribute(rounds_++, mine);
+  }
   std::optional<Reduction> reduction_done() override {
     if (rounds_ == 0 || read_ == rounds_) return std::nullopt;
     const std::optional<Reduction> r = mux_.result(rounds_ - 1);
@@ -30,6 +33,8 @@ class ActorMux::Port final : public Transport {
 
  private:
   void do_send(int to, Bytes message) override {
+    if (to < 0 || to >= mux_.actors_ || to == actor_)
+      throw std::logic_error("ActorMux: a message to actor " + std::to_string(to));
     if (mux_.host(to) == mux_.rank_.rank()) {
       mux_.post(actor_, to, std::move(message));
       return;
@@ -76,16 +81,27 @@ Transport& ActorMux::port(int actor) {
   return *ports_[static_cast<std::size_t>(slot(actor))];
 }
 
+std::size_t ActorMux::queued() const {
+  std::size_t n = 0;
+  for (const auto& in : inbox_) n += in.size();
+  return n;
+}
+
 void ActorMux::post(int from, int to, Bytes message) {
   inbox_[static_cast<std::size_t>(slot(to))].emplace_back(from, std::move(message));
 }
 
 void ActorMux::pump() {
   rank_.poll(
-      [this](int, std::span<const std::byte> m) {
+      [this](int from_rank, std::span<const std::byte> m) {
         if (m.size() < kTrailer) throw std::logic_error("ActorMux: a message without its actors");
         std::uint32_t ids[2];
         std::memcpy(ids, m.data() + (m.size() - kTrailer), kTrailer);
+        if (ids[0] >= static_cast<std::uint32_t>(actors_) || ids[1] >= static_cast<std::uint32_t>(actors_) ||
+            host(static_cast<int>(ids[0])) != rank_.rank() || host(static_cast<int>(ids[1])) != from_rank)
+          throw std::logic_error("ActorMux: a message for actor " + std::to_string(ids[0]) +
+                                 " from actor " + std::to_string(ids[1]) + " came from rank " +
+                                 std::to_string(from_rank));
         post(static_cast<int>(ids[1]), static_cast<int>(ids[0]),
              Bytes(m.begin(), m.end() - static_cast<std::ptrdiff_t>(kTrailer)));
       },

@@ -44,6 +44,8 @@ class ActorMux {
   const std::vector<int>& local() const { return local_; }
   // Actor k's transport. Precondition: host(k) == this rank.
   Transport& port(int actor);
+  // Messages in this rank's inboxes, not yet polled by their actor.
+  std::size_t queued() const;
 
  private:
   class Port;

@@ -81,6 +81,7 @@ bool SimNetwork::deliver_one() {
 std::size_t SimNetwork::in_flight() const {
   std::size_t n = 0;
   for (const Channel& ch : channels_) n += ch.messages.size();
+  for (const auto& box : inbox_) n += box.size();  // delivered, not yet polled
   return n;
 }
 

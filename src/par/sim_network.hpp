@@ -33,7 +33,7 @@ class SimNetwork {
   // Delivers one in-flight message from a channel that is not held (a seeded choice);
   // false when there is none.
   bool deliver_one();
-  std::size_t in_flight() const;  // held channels included
+  std::size_t in_flight() const;  // held channels and delivered, unpolled messages included
 
   void hold(int from, int to) { channel(from, to).held = true; }
   void release(int from, int to) { channel(from, to).held = false; }

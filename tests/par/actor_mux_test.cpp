@@ -54,7 +54,12 @@ TEST(ActorMux, SubmeshesSharingRanksBuildTheSequentialDelaunayMesh) {
       all[rng() % static_cast<std::size_t>(actors)]->add_point(p);
       ASSERT_EQ(reference.insert(p).outcome, Outcome::Inserted);
     }
-    ASSERT_GT(test::run_to_termination(net, all, seed, 20'000'000u), 0u);
+    const auto unread = [&] {
+      std::size_t n = 0;
+      for (const auto& m : muxes) n += m->queued();
+      return n;
+    };
+    ASSERT_GT(test::run_to_termination(net, all, seed, 20'000'000u, unread), 0u);
     std::uint64_t sent = 0, received = 0, commits = 0;
     for (const Transport* t : ports) sent += t->sent(), received += t->received();
     EXPECT_EQ(sent, received) << "seed " << seed << ": a message left in a mux's inbox";
@@ -138,6 +143,43 @@ TEST(ActorMux, PortsKeepFifoCountsAndReductions) {
         EXPECT_EQ(*got[static_cast<std::size_t>(k)], want) << "seed " << seed;
       }
     }
+  }
+}
+
+// Reduction rounds with the actors of a rank at different rounds: each actor starts its
+// round, reads its result whenever it is next picked, and starts the next round at once
+// (as termination detection does), in a random order across actors and ranks. Every actor
+// reads every round's sum over all N actors.
+TEST(ActorMux, InterleavedRoundsEachSumOverAllActors) {
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    const int ranks = 2 + static_cast<int>(seed % 3), actors = ranks + static_cast<int>(seed % 5);
+    const int rounds = 6;
+    SimNetwork net(ranks, seed);
+    std::vector<std::unique_ptr<ActorMux>> muxes;
+    for (int r = 0; r < ranks; ++r) muxes.push_back(std::make_unique<ActorMux>(net.endpoint(r), actors));
+    auto port = [&](int k) -> Transport& { return muxes[static_cast<std::size_t>(k % ranks)]->port(k); };
+    std::mt19937_64 rng(seed);
+    std::vector<int> round(static_cast<std::size_t>(actors), -1);  // started, not yet read
+    int finished = 0;
+    for (int spins = 0; spins < 200000 && finished < actors; ++spins) {
+      const int k = static_cast<int>(rng() % static_cast<unsigned>(actors));
+      int& r = round[static_cast<std::size_t>(k)];
+      if (r == rounds) continue;
+      if (r >= 0) {
+        const std::optional<Reduction> got = port(k).reduction_done();
+        if (!got) continue;
+        const std::uint64_t n = static_cast<std::uint64_t>(actors);
+        EXPECT_EQ(*got, (Reduction{n * (n - 1) / 2, n * static_cast<std::uint64_t>(r), n}))
+            << "seed " << seed << ", actor " << k << ", round " << r;
+      }
+      if (++r == rounds) {
+        ++finished;
+        continue;
+      }
+      port(k).start_reduction({static_cast<std::uint64_t>(k), static_cast<std::uint64_t>(r), 1});
+      EXPECT_THROW(port(k).start_reduction({0, 0, 0}), std::logic_error);  // unread round
+    }
+    EXPECT_EQ(finished, actors) << "seed " << seed << ": rounds stuck";
   }
 }
 
