@@ -79,8 +79,9 @@ InsertionStats& operator+=(InsertionStats& a, const InsertionStats& b);
 
 class InsertionActor {
  public:
-  // The rank's transport (rank r holds submesh r); `seed` seeds the back-off; `rules`
-  // (optional, outliving the actor): refinement.
+  // The actor's transport (its rank is the submesh's id: the rank's own transport, or an
+  // ActorMux port); `seed` seeds the back-off; `rules` (optional, outliving the actor):
+  // refinement.
   InsertionActor(Transport& t, Submesh sub, std::uint64_t seed, StepRules* rules = nullptr);
 
   void add_point(const Point& p) { ready_.push_back({p, kNoGid, 0, 0}); }
