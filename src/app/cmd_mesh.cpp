@@ -12,6 +12,7 @@
 // inadmissible domain the guards did not catch).
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -134,7 +135,10 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
                 "rank k mod P; 0: one per rank)")
       ->check(CLI::Validator(
           [](const std::string& text) -> std::string {
-            const long long n = std::stoll(text);
+            long long n = 0;
+            const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+            if (ec != std::errc() || end != text.data() + text.size() || n < 0)
+              return "a number of submeshes: " + text;
             if (n != 0 && n < world().size)
               return "at least one submesh per rank: " + text + " for " +
                      std::to_string(world().size) + " ranks";

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 #include <string>
 
 #include "par/mpi_collect.hpp"
@@ -163,14 +164,28 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     throw RunAbandoned("another rank failed (exit " + std::to_string(other) + ")");
   // A coarse run that stopped at its cap, or left D out of T, is not a mesh to distribute:
   // every rank then leaves the whole refinement to rank 0.
-  const bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
+  bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
   std::vector<Point> points;
   std::vector<par::RankFigures> figures;
   par::Partition part;
+  // More submeshes than M_o can give (METIS would leave one empty): one per rank instead;
+  // fewer tets than ranks: rank 0 refines alone. Every rank decides alike (same M_o, seed).
+  std::string partition_note;
+  if (distribute) {
+    const std::size_t wanted = submeshes == 0 ? std::size_t(w.size) : submeshes;
+    for (const std::size_t parts : {wanted, std::size_t(w.size)}) {
+      try {
+        part = par::partition_tets(vm.dt.store(), vm.inside, static_cast<std::uint32_t>(parts), seed);
+        break;
+      } catch (const std::invalid_argument& e) {
+        partition_note += (partition_note.empty() ? "" : "; ") + std::string(e.what());
+        part = {};
+      }
+    }
+    distribute = part.parts > 0;
+  }
   if (distribute) {
     try {
-      const auto parts = static_cast<std::uint32_t>(submeshes == 0 ? std::size_t(w.size) : submeshes);
-      part = par::partition_tets(vm.dt.store(), vm.inside, parts, seed);
       par::RankResult mine;
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
@@ -229,6 +244,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                          {"submeshes", distribute ? part.parts : 0u},
                                          {"injected_latency_us", latency_us},
                                          {"distributed", distribute},
+                                         {"partition_note", partition_note},
                                          {"initial_tets", m0_tets},
                                          {"points", points.size()},
                                          {"points_absorbed", added},

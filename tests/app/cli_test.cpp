@@ -94,6 +94,14 @@ TEST_F(Cli, MalformedMeshForCheckExits2) {
   EXPECT_NE(r.out.find("m.ele:2"), std::string::npos) << r.out;
 }
 
+TEST_F(Cli, ANonNumericSubmeshCountIsAUsageError) {  // was exit 4 (an uncaught stoll)
+  const Outcome r = run("mesh " + std::string(PDR_DATA_DIR) + "/box.poly -o " + path("out") +
+                        " --submeshes abc");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("a number of submeshes"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(path("out.ele")));
+}
+
 TEST_F(Cli, UnknownFormatIsAUsageError) {
   write_points("pts.node", 10);
   const Outcome r = run("delaunay " + path("pts.node") + " -o " + path("out") + " --formats stl");
