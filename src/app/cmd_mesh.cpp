@@ -169,10 +169,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
 
   int code = kExitOk;
   refine::RefineOptions opt = args.options;
-  opt.d = an.report.feature.d;
-  opt.admissible = an.report.admissible;
-  opt.acute_vertices = refine::acute_vertices(an.report);  // the guards' shells
-  opt.exact_theory = refine::theorem_applies(an);
+  refine::set_domain(opt, an);  // d, admissibility, the guards
   if (progress.enabled())
     opt.on_progress = [&progress](std::size_t vertices) { progress.count(vertices, "vertices"); };
   progress.phase("surface");

@@ -280,7 +280,11 @@ class Refiner {
     if (acute.empty())
       for (std::uint32_t v = 0; v < m_.surf.vertex_count(); ++v)
         if (m_.surf.home(v).kind == HomeKind::Input) acute.push_back(v);
-    guard_ = SplitGuard(m_.surf, acute, budget_.resolution() / 64);
+    // The cylinders are no wider than the element size asked for (refine/split.hpp).
+    double cap = std::numeric_limits<double>::infinity();
+    if (o_.size) cap = std::min(cap, *o_.size);
+    if (o_.max_volume) cap = std::min(cap, std::cbrt(*o_.max_volume));
+    guard_ = SplitGuard(m_.surf, acute, budget_.resolution() / 64, o_.cylinders, cap);
     const TetStore& s = m_.dt.store();
     std::vector<TetId> all;
     for (TetId t = 0; t < s.slots(); ++t)
@@ -583,6 +587,14 @@ class Refiner {
 };
 
 }  // namespace
+
+void set_domain(RefineOptions& o, const domain::DomainAnalysis& an) {
+  o.d = an.report.feature.d;
+  o.admissible = an.report.admissible;
+  o.exact_theory = theorem_applies(an);
+  o.acute_vertices = acute_vertices(an.report);
+  o.cylinders = protecting_cylinders(an);
+}
 
 bool theorem_applies(const domain::DomainAnalysis& an) {
   const domain::DomainReport& r = an.report;

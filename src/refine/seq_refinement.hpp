@@ -89,6 +89,8 @@ struct RefineOptions {
   std::vector<std::uint32_t> acute_vertices;  // inadmissible: acute_vertices(report)
                                               // (refine/split.hpp); empty: every input
                                               // vertex
+  std::vector<double> cylinders;  // inadmissible: protecting_cylinders(analysis)
+                                  // (refine/split.hpp); empty: none
 };
 
 // Theorem 1's hypotheses hold, and the refinement's constructions on ∂Ω are exact:
@@ -98,6 +100,10 @@ struct RefineOptions {
 // tilted facet they are rounded off it by ulps, and the repairs of refine/flat.hpp, which
 // are no step of Fig. 2, may refine elements below the a-priori bound).
 bool theorem_applies(const domain::DomainAnalysis& an);
+
+// Sets what the domain's analysis decides in the options: d, admissible, exact_theory and
+// the guards' acute vertices and protecting cylinders (refine/split.hpp).
+void set_domain(RefineOptions& o, const domain::DomainAnalysis& an);
 
 struct Leftover {
   TetId tet = kNoTet;

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
+#include "domain/distance.hpp"
 #include "geom/construct.hpp"
 
 namespace pdr::refine {
@@ -24,8 +26,32 @@ std::vector<std::uint32_t> acute_vertices(const domain::DomainReport& r) {
   return out;
 }
 
+std::vector<double> protecting_cylinders(const domain::DomainAnalysis& an) {
+  const domain::PlcDomain& dom = an.domain;
+  std::vector<std::uint32_t> sharp;
+  for (const domain::AngleRecord& a : an.report.violations) {
+    if (a.kind != domain::AngleKind::FacetFacet) continue;
+    for (const auto& e : a.segments)
+      if (const auto s = dom.find_segment(e[0], e[1])) sharp.push_back(*s);
+  }
+  if (sharp.empty()) return {};
+  const domain::LocalFeatureSizes lfs = domain::local_feature_sizes(dom);
+  std::vector<double> radius(dom.segments.size(), 0.0);
+  for (const std::uint32_t s : sharp) {
+    // segment_d is the distance to the unrelated components over sqrt(2); infinite when
+    // every component touches the segment: then the segment's length stands for it.
+    double l = lfs.segment_d[s] * std::numbers::sqrt2;
+    if (!std::isfinite(l))
+      l = std::sqrt(domain::dist2_point_point(dom.plc.points[dom.segments[s].a],
+                                              dom.plc.points[dom.segments[s].b]));
+    radius[s] = kCylinderFraction * l;
+  }
+  return radius;
+}
+
 SplitGuard::SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& acute,
-                       double protected_length)
+                       double protected_length, const std::vector<double>& cylinders,
+                       double cylinder_cap)
     : protected_(protected_length) {
   if (acute.empty()) return;
   acute_.assign(m.vertex_count(), 0);
@@ -38,16 +64,36 @@ SplitGuard::SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uin
   for (std::size_t f = 0; f < m.facets.size(); ++f)
     for (const std::uint32_t s : m.facets[f].segments)
       if (guarded_[s]) guarded_facet_[f] = 1;
+  if (cylinders.empty()) return;
+  facet_cylinders_.assign(m.facets.size(), {});
+  for (std::size_t f = 0; f < m.facets.size(); ++f)
+    for (const std::uint32_t s : m.facets[f].segments)
+      if (s < cylinders.size() && cylinders[s] > 0)
+        facet_cylinders_[f].push_back({m.point(m.segments[s].a), m.point(m.segments[s].b),
+                                       std::min(cylinders[s], cylinder_cap), s});
 }
 
 std::string SplitGuard::refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f) const {
   const surface::Subfacet& x = m.subfacet(f);
   if (!active() || !guarded_facet_[x.facet]) return {};
-  const double r = std::sqrt(construct::triangle_circumradius2(m.point(x.v[0]), m.point(x.v[1]),
-                                                               m.point(x.v[2])));
-  if (r >= protected_) return {};
+  const Point &a = m.point(x.v[0]), &b = m.point(x.v[1]), &c = m.point(x.v[2]);
+  const double r = std::sqrt(construct::triangle_circumradius2(a, b, c));
   std::ostringstream os;
   os.precision(6);
+  if (!facet_cylinders_.empty()) {
+    const Point q = construct::triangle_circumcenter(a, b, c);
+    for (const Cylinder& y : facet_cylinders_[x.facet]) {
+      const double dist = std::sqrt(domain::dist2_point_segment(q, y.a, y.b));
+      if (dist >= y.radius || r >= kCylinderFloor * y.radius) continue;
+      os << "refine.protected: the circumcenter of subfacet (" << x.v[0] << ", " << x.v[1]
+         << ", " << x.v[2] << ") of " << m.facet_name(x.facet) << " lies " << dist << " from "
+         << m.segment_name(y.segment) << ", inside its protecting cylinder of radius "
+         << y.radius << " (a dihedral below 90 or above 270 deg), and its circumradius " << r
+         << " is below the cylinder's protected length " << kCylinderFloor * y.radius;
+      return os.str();
+    }
+  }
+  if (r >= protected_) return {};
   os << "refine.protected: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2]
      << ") of " << m.facet_name(x.facet) << " has circumradius " << r
      << " < the protected length " << protected_

@@ -21,12 +21,32 @@
 //                   flat.hpp rule 1: a flat tet on a facet) and conformity repairs
 //                   (refine/conformity.hpp: an element of D missing from T) are not held
 //                   by it (plan's below_floor); the vertex cap bounds them.
+//   cylinders       along a sharp segment (two facets meeting along it at a dihedral
+//                   below 90° or above 270°) the subfacets of the two facets encroach each
+//                   other at every scale, so a protected length alone leaves a band as
+//                   wide as the segment is long refined down to it. After the protecting
+//                   balls of Cheng, Dey, Ramos and Ray (polyhedra with small angles), a
+//                   cylinder around the segment, of radius a fraction (kCylinderFraction)
+//                   of the segment's local feature size (its distance to the components
+//                   sharing no vertex with it), and no wider than the element size the
+//                   run asks for (min(L, cbrt(V)): a finer mesh leaves fewer tets near the
+//                   segment unrefined), has a protected length of its own: a subfacet of a
+//                   facet containing the segment, whose circumcenter lies in the cylinder,
+//                   is not refined once its circumradius is below kCylinderFloor times the
+//                   radius (refuse_subfacet). The mutual encroachment then stops at sizes
+//                   proportional to the local feature size (or the element size), not to
+//                   the global protected length; tets whose refinement needed such a split
+//                   are refused (listed, exit 3), as below the floor. Measured on the
+//                   bench's domains (bench_mesh --outside): at 60-70 degrees the cascade
+//                   ends by itself above the cylinder's floor (nothing is refused, as
+//                   before); at 33 degrees the run makes about a tenth of the vertices.
 // For an admissible domain the guard is empty: every split is the midpoint, as Lemma 1
 // needs. Lengths and the split point are floating point: they say where, not whether; the
 // point is a + t (b - a), on the segment up to rounding like the midpoint.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,11 +58,20 @@ namespace pdr::refine {
 // The acute vertices of a domain (Plc vertex ids = D's input vertex ids), sorted, unique.
 std::vector<std::uint32_t> acute_vertices(const domain::DomainReport& r);
 
+// The protecting cylinders' radii, kCylinderFraction times the local feature size, per
+// segment of the domain (parallel to domain::PlcDomain::segments, as D's segments); 0 for a
+// segment along which no two facets meet at an inadmissible dihedral. Empty when there is
+// none.
+inline constexpr double kCylinderFraction = 0.5;
+inline constexpr double kCylinderFloor = 0.5;
+std::vector<double> protecting_cylinders(const domain::DomainAnalysis& an);
+
 class SplitGuard {
  public:
   SplitGuard() = default;  // no guard: midpoints
   SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& acute,
-             double protected_length);
+             double protected_length, const std::vector<double>& cylinders = {},
+             double cylinder_cap = std::numeric_limits<double>::infinity());
 
   struct Plan {
     bool ok = true;
@@ -63,6 +92,12 @@ class SplitGuard {
   std::vector<std::uint8_t> guarded_;  // per segment
   std::vector<std::uint8_t> guarded_facet_;
   double protected_ = 0;
+  struct Cylinder {
+    Point a, b;
+    double radius = 0;
+    std::uint32_t segment = 0;
+  };
+  std::vector<std::vector<Cylinder>> facet_cylinders_;  // per facet, of its sharp segments
 
   bool is_acute(std::uint32_t v) const { return v < acute_.size() && acute_[v] != 0; }
 };

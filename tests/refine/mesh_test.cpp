@@ -37,10 +37,7 @@ MeshRun mesh(const std::string& name, std::optional<double> max_volume) {
   RefineOptions o;
   o.audit = true;
   o.max_volume = max_volume;
-  o.d = an.report.feature.d;
-  o.admissible = an.report.admissible;
-  o.exact_theory = theorem_applies(an);
-  o.acute_vertices = acute_vertices(an.report);
+  set_domain(o, an);
   r.rr = refine(r.vm, o);
   const MeshData m = to_mesh_data(r.vm.dt, r.vm.inside);
   check::Options co;
