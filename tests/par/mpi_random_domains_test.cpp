@@ -91,7 +91,7 @@ TEST(MpiRandomDomains, OutsideTheTheoryEndsInAConformingMesh) {
   const char* env = std::getenv("PDR_MPI_CASES");
   const int cases = env ? std::atoi(env) : 6;
   refine::test::check_property("MpiOutsideEndsConforming", cases, [] {
-    const Plc plc = *pdr::test::gen_outside_domain(45);
+    const Plc plc = *pdr::test::gen_outside_domain(15);  // corners down to 15 degrees
     const Point e = refine::test::box_extent(plc);
     refine::test::Sizing z;
     z.max_volume = e[0] * e[1] * e[2] / *rc::gen::inRange(1000, 4000);
