@@ -30,7 +30,11 @@ std::vector<double> protecting_cylinders(const domain::DomainAnalysis& an) {
   const domain::PlcDomain& dom = an.domain;
   std::vector<std::uint32_t> sharp;
   for (const domain::AngleRecord& a : an.report.violations) {
-    if (a.kind != domain::AngleKind::FacetFacet) continue;
+    // The angle, like the radius, is floating point: it sizes a guard, it decides no
+    // predicate.
+    if (a.kind != domain::AngleKind::FacetFacet ||
+        std::min(a.degrees, 360 - a.degrees) >= kCylinderAngleDeg)
+      continue;
     for (const auto& e : a.segments)
       if (const auto s = dom.find_segment(e[0], e[1])) sharp.push_back(*s);
   }

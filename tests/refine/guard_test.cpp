@@ -235,8 +235,23 @@ TEST(RefineGuard, CylindersLieAlongTheSharpDihedrals) {
     }
   }
   EXPECT_EQ(sharp, 4u);
-  // An admissible domain has none.
+  // An admissible domain has none, nor a dihedral at or above arccos(1/3) (about 70.53
+  // degrees, where Shewchuk's refinement terminates without one); below it, the wedge's
+  // sharp edge has one.
   EXPECT_TRUE(protecting_cylinders(analyze(test::read_data("cube-in-cube.poly"))).empty());
+  // A prism over a parallelogram with corners deg and 180 - deg: two dihedrals of deg.
+  const auto cylinders = [](double deg) {
+    const double c = 2 * std::cos(deg * std::numbers::pi / 180);
+    const double h = 2 * std::sin(deg * std::numbers::pi / 180);
+    const DomainAnalysis a = analyze(test::prism({{0, 0}, {4, 0}, {4 + c, h}, {c, h}}, 0, 3));
+    EXPECT_FALSE(a.report.admissible) << deg;
+    const std::vector<double> r = protecting_cylinders(a);
+    return std::count_if(r.begin(), r.end(), [](double x) { return x > 0; });
+  };
+  EXPECT_EQ(cylinders(80), 0);
+  EXPECT_EQ(cylinders(71), 0);
+  EXPECT_EQ(cylinders(70), 2);
+  EXPECT_EQ(cylinders(40), 2);
 }
 
 // A subfacet of a facet along a sharp segment, whose circumcenter lies in the segment's

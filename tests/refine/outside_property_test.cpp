@@ -127,6 +127,27 @@ TEST(OutsideProperty, RotatedToriOfTriangleFacetsEndConforming) {
   }, seed());
 }
 
+// The same property on pyramids (a sharp apex) and twisted prisms of triangle facets
+// (dihedrals of 55-80 degrees along twisted edges, skinny facets, neighbours coplanar within
+// a small twist), with a random volume bound.
+TEST(OutsideProperty, PyramidsAndTwistedPrismsEndConforming) {
+  check_property("PyramidsAndTwistedPrismsEndConforming", std::max(1, cases() / 3), [] {
+    const Plc plc = *gen_pyramid_or_twisted_prism();
+    const Sizing z = *gen_fine_sizing(plc);
+    std::ofstream(counterexample_path() + ".running")
+        << poly_text(plc, "the case PyramidsAndTwistedPrismsEndConforming was running\noptions:" +
+                              z.options());
+    const std::string why = outside_failure(plc, z);
+    if (why.empty()) return;
+    const std::string path = counterexample_path();
+    std::ofstream(path) << poly_text(
+        plc, "shrunk counterexample of OutsideProperty.PyramidsAndTwistedPrismsEndConforming\n"
+             "options:" + z.options());
+    RC_LOG() << "options:" << z.options() << "\nwritten to " << path << "\n" << why;
+    RC_FAIL("a pyramid or twisted prism does not end in a conforming Delaunay mesh");
+  }, seed());
+}
+
 // The generator's domains are outside the theory by the domain analysis (else the property
 // tests nothing new).
 TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {

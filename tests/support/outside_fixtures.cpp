@@ -145,4 +145,58 @@ rc::Gen<Plc> gen_rotated_torus_of_triangles() {
   });
 }
 
+Plc pyramid(int n, double height) {
+  std::vector<Point> p;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    p.push_back({std::cos(t), std::sin(t), 0});
+  }
+  p.push_back({0, 0, height});
+  const auto apex = static_cast<std::uint32_t>(n);
+  std::vector<FacetSpec> f(1);
+  f[0].resize(1);
+  for (int i = n - 1; i >= 0; --i) f[0][0].push_back(static_cast<std::uint32_t>(i));
+  for (std::uint32_t i = 0; i < apex; ++i) f.push_back({{i, (i + 1) % apex, apex}});
+  return make_plc(p, f);
+}
+
+Plc twisted_prism(int n, double twist, int layers, double height) {
+  std::vector<Point> p;
+  for (int l = 0; l <= layers; ++l)
+    for (int i = 0; i < n; ++i) {
+      const double t = 2 * std::numbers::pi * i / n + twist * l / layers;
+      p.push_back({std::cos(t), std::sin(t), height * l / layers});
+    }
+  const auto id = [n](int l, int i) { return static_cast<std::uint32_t>(l * n + i % n); };
+  std::vector<FacetSpec> f(2);
+  f[0].resize(1);
+  f[1].resize(1);
+  for (int i = n - 1; i >= 0; --i) f[0][0].push_back(id(0, i));
+  for (int i = 0; i < n; ++i) f[1][0].push_back(id(layers, i));
+  for (int l = 0; l < layers; ++l)
+    for (int i = 0; i < n; ++i) {
+      f.push_back({{id(l, i), id(l, i + 1), id(l + 1, i + 1)}});
+      f.push_back({{id(l, i), id(l + 1, i + 1), id(l + 1, i)}});
+    }
+  return make_plc(p, f);
+}
+
+rc::Gen<Plc> gen_pyramid_or_twisted_prism() {
+  return rc::gen::exec([] {
+    Plc plc;
+    if (*rc::gen::inRange(0, 2) == 0) {
+      plc = pyramid(*rc::gen::inRange(3, 13), 0.5 + *rc::gen::inRange(0, 196) / 10.0);
+    } else {
+      plc = twisted_prism(*rc::gen::inRange(3, 7), *rc::gen::inRange(0, 121) / 100.0,
+                          *rc::gen::inRange(1, 9), 0.5 + *rc::gen::inRange(0, 46) / 10.0);
+    }
+    if (*rc::gen::inRange(0, 2) == 1) {
+      const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
+      const double a = angle(), b = angle(), c = angle();
+      plc = rotated(std::move(plc), a, b, c);
+    }
+    return plc;
+  });
+}
+
 }  // namespace pdr::test

@@ -44,4 +44,15 @@ Plc torus_of_triangles(int n, int m, double r);
 // Such tori, n in [6, 16], m in [4, 8], r in [0.45, 1.5], turned by a random rotation.
 rc::Gen<Plc> gen_rotated_torus_of_triangles();
 
+// A pyramid over the regular n-gon of circumradius 1, apex at `height` above its centre:
+// facets meeting at a sharp apex (every angle there small for a tall one).
+Plc pyramid(int n, double height);
+// A prism over the regular n-gon of circumradius 1, `height` tall, its top turned by
+// `twist` radians in `layers` steps; the sides are triangle facets (two per quad, skinny
+// for a large twist, nearly coplanar for a small one), as a CAD tool exports a twisted part.
+Plc twisted_prism(int n, double twist, int layers, double height);
+// Such pyramids (n in [3, 12], height 0.5 to 20) and twisted prisms (n in [3, 6], twist 0 to
+// 1.2, 1 to 8 layers, height 0.5 to 5), half of them turned by a random rotation.
+rc::Gen<Plc> gen_pyramid_or_twisted_prism();
+
 }  // namespace pdr::test
