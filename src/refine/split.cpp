@@ -92,7 +92,7 @@ std::string SplitGuard::refuse_subfacet(const surface::SurfaceMesh& m, std::uint
       os << "refine.protected: the circumcenter of subfacet (" << x.v[0] << ", " << x.v[1]
          << ", " << x.v[2] << ") of " << m.facet_name(x.facet) << " lies " << dist << " from "
          << m.segment_name(y.segment) << ", inside its protecting cylinder of radius "
-         << y.radius << " (a dihedral below 90 or above 270 deg), and its circumradius " << r
+         << y.radius << " (a dihedral below 70.53 or above 289.47 deg), and its circumradius " << r
          << " is below the cylinder's protected length " << kCylinderFloor * y.radius;
       return os.str();
     }
