@@ -22,9 +22,9 @@
 //                   (refine/conformity.hpp: an element of D missing from T) are not held
 //                   by it (plan's below_floor); the vertex cap bounds them.
 //   cylinders       along a sharp segment (two facets meeting along it at a dihedral
-//                   below arccos(1/3) = 70.5° or above 289.5°) the subfacets of the two facets encroach each
-//                   other at every scale, so a protected length alone leaves a band as
-//                   wide as the segment is long refined down to it. After the protecting
+//                   below arccos(1/3) = 70.5° or above 289.5°) the subfacets of the two
+//                   facets encroach each other at every scale, so a protected length
+//                   alone leaves a band as wide as the segment is long refined down to it. After the protecting
 //                   balls of Cheng, Dey, Ramos and Ray (polyhedra with small angles), a
 //                   cylinder around the segment, of radius a fraction (kCylinderFraction)
 //                   of the segment's local feature size (its distance to the components
