@@ -67,13 +67,26 @@ VertexId commit_point(VolumeMesh& m, const Cavity& c, std::uint32_t surf_vertex,
 
 void vertex_star(const VolumeMesh& m, VertexId v, TetId start, std::vector<TetId>& star) {
   const TetStore& s = m.dt.store();
+  // Tets already in the star, by slot, stamped with this call's epoch: linear in the star
+  // (a search of the list made a vertex of degree k cost k^2: a fine surface patch next to
+  // a coarse vertex spent most of a run here).
+  thread_local std::vector<std::uint32_t> seen;
+  thread_local std::uint32_t epoch = 0;
+  if (seen.size() < s.slots()) seen.resize(s.slots(), 0);
+  if (++epoch == 0) {
+    std::fill(seen.begin(), seen.end(), 0);
+    epoch = 1;
+  }
   star.assign(1, start);
+  seen[start] = epoch;
   // The tets of the star are adjacent across their faces that hold v.
   for (std::size_t i = 0; i < star.size(); ++i)
     for (int k = 0; k < 4; ++k) {
       if (s.vertex(star[i], k) == v) continue;
       const TetId n = s.neighbour(star[i], k);
-      if (std::find(star.begin(), star.end(), n) == star.end()) star.push_back(n);
+      if (seen[n] == epoch) continue;
+      seen[n] = epoch;
+      star.push_back(n);
     }
 }
 
