@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <limits>
 
 #include "domain/bvh.hpp"
@@ -244,6 +245,87 @@ LocalFeatureSizes local_feature_sizes(const PlcDomain& dom) {
     out.facet_d[f] = std::sqrt(best / 2);
   }
   return out;
+}
+
+struct UnrelatedDistance::Impl {
+  PlcDomain dom;
+  Primitives all;
+  Bvh bvh;
+  // The nearest primitive to p that `unrelated` accepts.
+  template <class Unrelated>
+  double nearest(const Point& p, Unrelated&& unrelated) const {
+    const std::vector<Point>& pts = dom.plc.points;
+    Box qb;
+    qb.add(p);
+    double best = std::numeric_limits<double>::infinity();
+    bvh.branch_and_bound([&](const Box& b) { return box_gap2(qb, b); }, [&] { return best; },
+                         [&](std::uint32_t j) {
+                           const Prim& o = all.prims[j];
+                           if (!unrelated(o)) return;
+                           double d2 = best;
+                           switch (o.kind) {
+                             case ComponentKind::Vertex:
+                               d2 = dist2_point_point(p, pts[o.id]);
+                               break;
+                             case ComponentKind::Segment: {
+                               const DomainSegment& r = dom.segments[o.id];
+                               d2 = dist2_point_segment(p, pts[r.a], pts[r.b]);
+                               break;
+                             }
+                             case ComponentKind::Facet: {
+                               const auto& v = dom.facets[o.id].tris[o.tri].v;
+                               d2 = dist2_point_triangle(p, pts[v[0]], pts[v[1]], pts[v[2]]);
+                               break;
+                             }
+                           }
+                           best = std::min(best, d2);
+                         });
+    return std::sqrt(best);
+  }
+};
+
+UnrelatedDistance::UnrelatedDistance(const PlcDomain& dom) : impl_(std::make_unique<Impl>()) {
+  impl_->dom = dom;
+  impl_->all = primitives(impl_->dom);
+  impl_->bvh = Bvh(impl_->all.boxes);
+}
+
+UnrelatedDistance::~UnrelatedDistance() = default;
+
+double UnrelatedDistance::segment_size_at(std::uint32_t s, const Point& p) const {
+  double dist = to_segment_unrelated(s, p);
+  for (const std::uint32_t f : impl_->dom.segments[s].facets)
+    if (impl_->dom.facets[f].is_face) dist = std::min(dist, to_facet_unrelated(f, p));
+  return (std::numbers::sqrt2 - 1) * dist;
+}
+
+double UnrelatedDistance::facet_size_at(std::uint32_t f, const Point& p) const {
+  return to_facet_unrelated(f, p) / std::numbers::sqrt2;
+}
+
+double UnrelatedDistance::to_segment_unrelated(std::uint32_t s, const Point& p) const {
+  const PlcDomain& dom = impl_->dom;
+  const DomainSegment& q = dom.segments[s];
+  return impl_->nearest(p, [&](const Prim& o) {
+    switch (o.kind) {
+      case ComponentKind::Vertex: return o.id != q.a && o.id != q.b;
+      case ComponentKind::Segment: return !segments_share(q, dom.segments[o.id]);
+      case ComponentKind::Facet: return !facet_has_segment_end(dom, o.id, q);
+    }
+    return false;
+  });
+}
+
+double UnrelatedDistance::to_facet_unrelated(std::uint32_t f, const Point& p) const {
+  const PlcDomain& dom = impl_->dom;
+  return impl_->nearest(p, [&](const Prim& o) {
+    switch (o.kind) {
+      case ComponentKind::Vertex: return !facet_has(dom, f, o.id);
+      case ComponentKind::Segment: return !facet_has_segment_end(dom, f, dom.segments[o.id]);
+      case ComponentKind::Facet: return o.id != f && !facets_share(dom, f, o.id);
+    }
+    return false;
+  });
 }
 
 LocalFeatureSizes local_feature_sizes_brute(const PlcDomain& dom) {

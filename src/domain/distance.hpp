@@ -34,6 +34,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,29 @@ struct LocalFeatureSizes {
 };
 LocalFeatureSizes local_feature_sizes(const PlcDomain& dom);
 LocalFeatureSizes local_feature_sizes_brute(const PlcDomain& dom);
+
+// Distances from a point to the components unrelated to a segment or to a facet (sharing no
+// vertex with it), by branch and bound over the same hierarchy: the sizes of the surface
+// mesh graded by position (surface/init.hpp). Floating point, like d. Holds a copy of what
+// it needs of the domain.
+class UnrelatedDistance {
+ public:
+  explicit UnrelatedDistance(const PlcDomain& dom);
+  ~UnrelatedDistance();
+  UnrelatedDistance(const UnrelatedDistance&) = delete;
+  UnrelatedDistance& operator=(const UnrelatedDistance&) = delete;
+  double to_segment_unrelated(std::uint32_t s, const Point& p) const;  // infinity: none
+  double to_facet_unrelated(std::uint32_t f, const Point& p) const;
+  // The sizes of surface/init.hpp at p: for segment s, (sqrt(2) - 1) times p's distance to
+  // what is unrelated to s or to a facet containing s; for facet f, p's distance to what is
+  // unrelated to f over sqrt(2).
+  double segment_size_at(std::uint32_t s, const Point& p) const;
+  double facet_size_at(std::uint32_t f, const Point& p) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 double dist2_point_point(const Point& p, const Point& q);
 double dist2_point_segment(const Point& p, const Point& a, const Point& b);

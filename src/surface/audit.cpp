@@ -217,13 +217,13 @@ void check_facet(const SurfaceMesh& m, std::uint32_t f, const std::vector<std::u
 
 void check_sizes(const SurfaceMesh& m, SurfaceAudit& out) {
   if (!(m.d > 0) || !std::isfinite(m.d)) return;
-  // Graded meshes: each element against the d its segment or facet was refined for.
+  // Graded meshes: each element against the d it was refined for (at its position).
   for (std::uint32_t s = 0; s < m.subsegments().size(); ++s)
-    if (subsegment_too_long(m, s, m.segment_size(m.subsegment(s).segment)))
+    if (subsegment_too_long(m, s, m.subsegment_size(s)))
       out.add("surface.size: subsegment " + edge_str(m.subsegment(s).v[0], m.subsegment(s).v[1]) +
               " of " + m.segment_name(m.subsegment(s).segment) + " is at least 2d long");
   for (std::uint32_t t = 0; t < m.subfacets().size(); ++t)
-    if (m.subfacet(t).alive && subfacet_too_large(m, t, m.facet_size(m.subfacet(t).facet)))
+    if (m.subfacet(t).alive && subfacet_too_large(m, t, m.subfacet_size(t)))
       out.add("surface.size: " + tri_str(m.subfacet(t)) + " of " + m.facet_name(m.subfacet(t).facet) +
               " has circumradius at least d√2");
 }

@@ -8,8 +8,11 @@
 #include <cstdio>
 #include <deque>
 #include <limits>
+#include <memory>
+#include <numbers>
 
 #include "domain/distance.hpp"
+#include "geom/construct.hpp"
 #include "surface/build.hpp"
 #include "surface/encroach.hpp"
 #include "surface/insert.hpp"
@@ -49,6 +52,52 @@ double size_estimate(const SurfaceMesh& m) {
   return n;
 }
 
+// The estimate for the mesh graded by position: the same sums, with each segment and each
+// subfacet of the facets' first triangulations cut into pieces no larger than the size at
+// their middle (halving a segment, quartering a triangle, at most kDepth times, and not
+// where the size is within twice the segment's or facet's own d, below which it never
+// goes), each piece counting length / size or area / size^2 at its middle.
+double position_estimate(const SurfaceMesh& m) {
+  constexpr int kDepth = 12;
+  const domain::UnrelatedDistance& z = *m.sizer;
+  double n = 0;
+  const auto on_segment = [&](auto&& self, std::uint32_t s, const Point& a, const Point& b,
+                              int depth) -> void {
+    const Point mid = construct::midpoint(a, b);
+    const double floor = m.segment_size(s);
+    const double l = distance(a, b), h = std::max(floor, z.segment_size_at(s, mid));
+    if (depth < kDepth && l > 4 * h && h > 2 * floor) {
+      self(self, s, a, mid, depth + 1);
+      self(self, s, mid, b, depth + 1);
+      return;
+    }
+    n += l / h;
+  };
+  for (std::uint32_t s = 0; s < m.segments.size(); ++s)
+    on_segment(on_segment, s, m.point(m.segments[s].a), m.point(m.segments[s].b), 0);
+  const auto on_triangle = [&](auto&& self, std::uint32_t f, const Point& a, const Point& b,
+                               const Point& c, int depth) -> void {
+    const Point g{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
+    const double area = triangle_area(a, b, c);
+    const double floor = m.facet_size(f);
+    const double h = std::max(floor, z.facet_size_at(f, g));
+    if (depth < kDepth && area > 16 * h * h && h > 2 * floor) {
+      const Point ab = construct::midpoint(a, b), bc = construct::midpoint(b, c),
+                  ca = construct::midpoint(c, a);
+      self(self, f, a, ab, ca, depth + 1);
+      self(self, f, ab, b, bc, depth + 1);
+      self(self, f, ca, bc, c, depth + 1);
+      self(self, f, ab, bc, ca, depth + 1);
+      return;
+    }
+    n += area / (h * h);
+  };
+  for (const Subfacet& t : m.subfacets())
+    if (t.alive)
+      on_triangle(on_triangle, t.facet, m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]), 0);
+  return n;
+}
+
 // Graded sizes (surface/init.hpp): d_F per facet, min(d_S, d_F of its facets) per segment.
 void set_graded_sizes(SurfaceMesh& m, const domain::PlcDomain& dom) {
   const domain::LocalFeatureSizes local = domain::local_feature_sizes(dom);
@@ -83,7 +132,7 @@ class Initializer {
     while (!queue.empty()) {
       const std::uint32_t s = queue.front();
       queue.pop_front();
-      if (!subsegment_too_long(m_, s, m_.segment_size(m_.subsegment(s).segment))) continue;
+      if (!subsegment_too_long(m_, s, m_.subsegment_size(s))) continue;
       guard(m_.segment_name(m_.subsegment(s).segment) + " (step 1, segment refinement)");
       const SplitResult r = split_subsegment(m_, s);
       ++st_.segment_splits;
@@ -99,7 +148,7 @@ class Initializer {
       const auto [t, v] = queue_.front();
       queue_.pop_front();
       const Subfacet& s = m_.subfacet(t);
-      if (!s.alive || s.v != v || !subfacet_too_large(m_, t, m_.facet_size(s.facet))) continue;
+      if (!s.alive || s.v != v || !subfacet_too_large(m_, t, m_.subfacet_size(t))) continue;
       const std::uint32_t f = s.facet;
       guard(m_.facet_name(f) + " (step 2, facet refinement)");
       const InsertResult r = insert_circumcenter(m_, t);
@@ -155,10 +204,15 @@ SurfaceInit init_surface(const domain::PlcDomain& dom, double d, const SurfaceOp
   out.stats.uniform_estimate = size_estimate(out.mesh);
   if (options.sizing != SurfaceSizing::Uniform) {
     set_graded_sizes(out.mesh, dom);
-    out.stats.graded_estimate = size_estimate(out.mesh);
+    out.mesh.sizer = std::make_shared<const domain::UnrelatedDistance>(dom);
+    out.stats.graded_estimate = position_estimate(out.mesh);
     out.stats.graded = options.sizing == SurfaceSizing::Graded ||
                        out.stats.uniform_estimate > kGradedGain * out.stats.graded_estimate;
-    if (!out.stats.graded) out.mesh.segment_d.clear(), out.mesh.facet_d.clear();
+    if (!out.stats.graded) {
+      out.mesh.segment_d.clear();
+      out.mesh.facet_d.clear();
+      out.mesh.sizer.reset();
+    }
   }
   out.stats.vertex_cap = vertex_cap(
       out.mesh, out.stats.graded ? out.stats.graded_estimate : out.stats.uniform_estimate,

@@ -46,6 +46,23 @@
 //     R >= d_F sqrt(2) encroaches no subsegment of F's boundary, each shorter than
 //     2 d'_S <= 2 d_F;
 //   - invariants 2-4 use h < d, and every d_X >= d.
+// By position (what init_surface builds): each subsegment is refined for the larger of
+// d'_S and (sqrt(2) - 1) times its midpoint's distance to the components unrelated to S or
+// to a facet containing S, each subfacet for the larger of d_F and its circumcenter's
+// distance to the components unrelated to F over sqrt(2)
+// (SurfaceMesh::subsegment_size, subfacet_size): one small gap makes only the part of a
+// facet near it fine, not the whole facet. Every size is still at least d, and each of the
+// two arguments above holds for whichever term is the larger:
+//   - balls: a subsegment of length l < 2 (sqrt(2) - 1) dist(m, X) has its diametral ball
+//     (radius l/2 < dist(m, X)) clear of X; a subfacet with R < dist(c, X) has its
+//     equatorial ball clear of X;
+//   - step 2: a circumcenter c of a subfacet of F with R >= dist(c, X_F) inside the
+//     diametral ball of a boundary subsegment ab (midpoint m) has R <= |ab|/sqrt(2) and
+//     |c - m| <= |ab|/2, so dist(m, X_F) <= R + |ab|/2 <= |ab| (1/sqrt(2) + 1/2); and
+//     |ab| < 2 (sqrt(2) - 1) dist(m, X_F) = dist(m, X_F) / (1/sqrt(2) + 1/2): impossible.
+//     (Against d'_S, as before with d_F.) So step 2 still splits nothing.
+// Its estimate cuts segments and the facets' first triangles into pieces no larger than the
+// size at their middle and sums length / size and area / size^2.
 // Not carried over: property 1's unencroached start between RELATED elements of
 // different sizes (a coarse subfacet next to the fine subfacets of a facet across a
 // right angle); SeqRefinement refines what T_o has encroached before anything else

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "geom/construct.hpp"
+
 namespace pdr::surface {
 
 namespace {
@@ -136,6 +138,20 @@ void SurfaceMesh::kill_subfacet(std::uint32_t t) {
   s.alive = false;
   for (const std::uint32_t v : s.v) erase_value(vtris_[v], t);
   free_.push_back(t);
+}
+
+double SurfaceMesh::subsegment_size(std::uint32_t s) const {
+  const Subsegment& x = subsegment(s);
+  if (!sizer) return segment_size(x.segment);
+  const Point m = construct::midpoint(point(x.v[0]), point(x.v[1]));
+  return std::max(segment_size(x.segment), sizer->segment_size_at(x.segment, m));
+}
+
+double SurfaceMesh::subfacet_size(std::uint32_t t) const {
+  const Subfacet& x = subfacet(t);
+  if (!sizer) return facet_size(x.facet);
+  const Point c = construct::triangle_circumcenter(point(x.v[0]), point(x.v[1]), point(x.v[2]));
+  return std::max(facet_size(x.facet), sizer->facet_size_at(x.facet, c));
 }
 
 }  // namespace pdr::surface

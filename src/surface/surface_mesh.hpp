@@ -23,11 +23,13 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "domain/distance.hpp"
 #include "geom/point.hpp"
 #include "surface/chart.hpp"
 
@@ -98,6 +100,12 @@ class SurfaceMesh {
   std::vector<double> segment_d, facet_d;
   double segment_size(std::uint32_t s) const { return segment_d.empty() ? d : segment_d[s]; }
   double facet_size(std::uint32_t f) const { return facet_d.empty() ? d : facet_d[f]; }
+  // Graded by position (surface/init.hpp): where the sizes at a point come from; null for
+  // a uniform mesh. subsegment_size and subfacet_size are the d an element is refined for:
+  // at its midpoint or circumcenter when graded, else d.
+  std::shared_ptr<const domain::UnrelatedDistance> sizer;
+  double subsegment_size(std::uint32_t s) const;
+  double subfacet_size(std::uint32_t t) const;
   std::vector<SurfaceSegment> segments;  // parallel to domain::PlcDomain::segments
   std::vector<SurfaceFacet> facets;      // parallel to domain::PlcDomain::facets
 

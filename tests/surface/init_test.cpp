@@ -87,6 +87,24 @@ TEST(SurfaceInit, GradedOnASmallFeature) {
   EXPECT_TRUE(audit_surface(forced.mesh).ok()) << describe(audit_surface(forced.mesh));
 }
 
+// Graded by position, not by facet: a void of side 1/2 just 0.01 inside the wall x = 0 of
+// a 10-cube makes only the patch of that wall facing it fine. Sized by facet, the whole
+// wall (area 100) would be refined for the gap: about 100 / (0.01 / sqrt 2)^2 = 2 million
+// vertices; by position a few thousand. Every element meets its size at its position
+// (audit_surface), and step 2 splits nothing (surface/init.hpp's argument).
+TEST(SurfaceInit, GradedByPositionNotByFacet) {
+  Plc plc = merge(box({0, 0, 0}, {10, 10, 10}), box({0.01, 4.75, 4.75}, {0.51, 5.25, 5.25}));
+  plc.holes.push_back({0.26, 5, 5});
+  relabel(plc);
+  const SurfaceInit g = init_surface(analyze(plc));
+  EXPECT_TRUE(g.stats.graded);
+  EXPECT_LT(g.mesh.vertex_count(), 50000u);
+  EXPECT_GT(g.mesh.vertex_count(), 1000u);  // the patch is refined for the gap
+  EXPECT_EQ(g.stats.encroachment_splits, 0u);
+  const SurfaceAudit audit = audit_surface(g.mesh);
+  EXPECT_TRUE(audit.ok()) << describe(audit);
+}
+
 TEST(SurfaceInit, FrameWithFacetHoles) {
   const DomainAnalysis a = analyze(frame_box());
   ASSERT_TRUE(a.report.admissible);
