@@ -180,11 +180,15 @@ class Initializer {
     throw SurfaceCapError(
         "surface.cap: " + where + ": the surface mesh reached " +
         std::to_string(m_.vertex_count()) + " vertices, its cap (--max-vertices, else from the " +
-        "domain's size and d = " + number(d_) + ", and a quarter of this machine's memory); "
-        "the uniform surface mesh of paper §2.1 is sized by d, the smallest distance between "
-        "unrelated components (see the domain report for the pair), so a tiny feature makes "
-        "it very fine; or refinement does not converge near an inadmissible angle. Raise "
-        "--max-vertices, or enlarge the small feature");
+        "domain's size and d = " + number(d_) + ", and a quarter of this machine's memory); " +
+        (m_.sizer ? "the graded surface mesh is sized by each element's distance to the "
+                    "components unrelated to it, so a small gap makes the surface near it very "
+                    "fine"
+                  : "the uniform surface mesh of paper §2.1 is sized by d, the smallest distance "
+                    "between unrelated components (see the domain report for the pair), so a "
+                    "tiny feature makes it very fine") +
+        "; or refinement does not converge near an inadmissible angle. Raise --max-vertices, "
+        "or enlarge the small feature");
   }
 
   SurfaceMesh& m_;
