@@ -221,35 +221,20 @@ DegreeVerdict overlap_by_degree(const Context& c, CheckResult& r) {
     S[i] = face_of(tets[h.tet], h.local);
     boxes[i] = box_of<3>(pts, S[i]);
   }
-  // (a): candidate pairs from a grid over the faces' boxes, each pair examined once, in the
-  // cell holding the low corner of the intersection of their cell ranges.
+  // (a): candidate pairs from a grid over the faces' boxes, each pair examined once
+  // (grid.hpp).
   std::uint64_t pairs = 0;
-  if (m > 1) {
-    const BoxGrid grid(boxes, static_cast<double>(m) / 4);
-    const GridFrame& frame = grid.frame();
-    const auto dims = frame.dims();
-    for (std::size_t cell = 0; cell < grid.cells(); ++cell) {
-      const auto in = grid.in_cell(cell);
-      const int ci = static_cast<int>(cell % dims[0]), cj = static_cast<int>(cell / dims[0] % dims[1]),
-                ck = static_cast<int>(cell / dims[0] / dims[1]);
-      for (std::size_t i = 0; i < in.size(); ++i)
-        for (std::size_t j = i + 1; j < in.size(); ++j) {
-          const Box& x = boxes[in[i]];
-          const Box& y = boxes[in[j]];
-          bool apart = false;
-          for (int a = 0; a < 3; ++a) apart = apart || x.lo[a] > y.hi[a] || y.lo[a] > x.hi[a];
-          if (apart) continue;
-          const auto cx = frame.cell_of({std::max(x.lo[0], y.lo[0]), std::max(x.lo[1], y.lo[1]),
-                                         std::max(x.lo[2], y.lo[2])});
-          if (cx[0] != ci || cx[1] != cj || cx[2] != ck) continue;
-          ++pairs;
-          if (improper(S[in[i]], S[in[j]], pts)) {
-            r.counts["degree.boundary_pairs_examined"] = pairs;
-            r.counts["degree.boundary_not_a_complex"] = 1;
-            return DegreeVerdict::PremisesFail;
-          }
-        }
-    }
+  bool improper_pair = false;
+  auto sequential = [](std::size_t n, auto&& body) { body(0u, 0, n); };
+  for_each_box_pair(boxes, 4, sequential, [&](unsigned, std::uint32_t i, std::uint32_t j) {
+    if (improper_pair) return;
+    ++pairs;
+    improper_pair = improper(S[i], S[j], pts);
+  });
+  if (improper_pair) {
+    r.counts["degree.boundary_pairs_examined"] = pairs;
+    r.counts["degree.boundary_not_a_complex"] = 1;
+    return DegreeVerdict::PremisesFail;
   }
   r.counts["degree.boundary_pairs_examined"] = pairs;
   // (b): classes of S linked through edges held by exactly two faces of S.

@@ -1,7 +1,10 @@
 // FacetRegion: exact point location and area of a projected facet (see facet_region.hpp).
 #include "check/facet_region.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <utility>
 
 #include "check/interval.hpp"
 
@@ -59,26 +62,86 @@ Q area2(const std::vector<P2>& poly) {
   return s;
 }
 
+namespace {
+
+// Edge a -> b of a polygon against the horizontal ray from q to the right: whether q lies
+// on the edge (Boundary), else toggles `inside` when the edge crosses the ray (half-open
+// rule: it spans the line y = q.y when exactly one end is above it). An edge with both ends
+// strictly above or strictly below q does nothing.
+bool edge_step(const P2& a, const P2& b, const Q2& q, bool& inside) {
+  const Sign ya = compare(q, a[1], 1), yb = compare(q, b[1], 1);
+  if (to_int(ya) * to_int(yb) > 0) return false;
+  const Sign o = orient(a, b, q);
+  if (o == Sign::Zero) {
+    const Sign xa = compare(q, a[0], 0), xb = compare(q, b[0], 0);
+    if (to_int(xa) * to_int(xb) <= 0) return true;
+  }
+  const bool a_above = ya == Sign::Negative, b_above = yb == Sign::Negative;
+  if (a_above != b_above) {
+    const bool crosses_right = b_above ? o == Sign::Positive : o == Sign::Negative;
+    if (crosses_right) inside = !inside;
+  }
+  return false;
+}
+
+}  // namespace
+
 Where locate_in_polygon(const std::vector<P2>& poly, const Q2& q) {
   bool inside = false;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const P2& a = poly[i];
-    const P2& b = poly[(i + 1) % poly.size()];
-    const Sign ya = compare(q, a[1], 1), yb = compare(q, b[1], 1);
-    const bool y_between = to_int(ya) * to_int(yb) <= 0;
-    if (y_between) {
-      const Sign o = orient(a, b, q);
-      if (o == Sign::Zero) {
-        const Sign xa = compare(q, a[0], 0), xb = compare(q, b[0], 0);
-        if (to_int(xa) * to_int(xb) <= 0) return Where::Boundary;
-      }
-      // Half-open rule: the edge spans the line y = q.y when exactly one end is above it.
-      const bool a_above = ya == Sign::Negative, b_above = yb == Sign::Negative;
-      if (a_above != b_above) {
-        const bool crosses_right = b_above ? o == Sign::Positive : o == Sign::Negative;
-        if (crosses_right) inside = !inside;
-      }
-    }
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    if (edge_step(poly[i], poly[(i + 1) % poly.size()], q, inside)) return Where::Boundary;
+  return inside ? Where::Inside : Where::Outside;
+}
+
+// Slabs: edge i is listed in every slab its y-range [min, max] meets. Slab of y:
+// floor((y - y0) * inv) clamped, monotone in y (as the grids of grid.hpp), so an edge whose
+// closed y-range holds q.y is in q.y's slab; the others do nothing in edge_step.
+PolygonSlabs::PolygonSlabs(const std::vector<P2>& poly) {
+  const std::size_t n = poly.size();
+  if (n == 0) return;
+  double lo = poly[0][1], hi = poly[0][1];
+  for (const P2& p : poly) lo = std::min(lo, p[1]), hi = std::max(hi, p[1]);
+  slabs_ = static_cast<int>(std::clamp<std::size_t>(n / 2, 1, 1 << 16));
+  y0_ = lo;
+  inv_ = hi > lo ? slabs_ / (hi - lo) : 0.0;
+  start_.assign(static_cast<std::size_t>(slabs_) + 1, 0);
+  auto range = [&](std::size_t i) {
+    const double ya = poly[i][1], yb = poly[(i + 1) % n][1];
+    return std::pair{slab(std::min(ya, yb)), slab(std::max(ya, yb))};
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [s0, s1] = range(i);
+    for (int s = s0; s <= s1; ++s) ++start_[s + 1];
+  }
+  for (int s = 0; s < slabs_; ++s) start_[s + 1] += start_[s];
+  edges_.resize(start_.back());
+  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [s0, s1] = range(i);
+    for (int s = s0; s <= s1; ++s) edges_[fill[s]++] = static_cast<std::uint32_t>(i);
+  }
+}
+
+int PolygonSlabs::slab(double y) const {
+  const double t = std::floor((y - y0_) * inv_);
+  if (!(t > 0)) return 0;  // also NaN
+  if (t >= slabs_ - 1) return slabs_ - 1;
+  return static_cast<int>(t);
+}
+
+Where PolygonSlabs::locate(const std::vector<P2>& poly, const Q2& q) const {
+  if (poly.empty()) return Where::Outside;
+  // An interval holding q.y = sum / n: each division rounds to nearest, and down/up reach
+  // past the neighbouring doubles.
+  const Interval sum = isum(q.y, q.n);
+  if (!sum.finite()) return locate_in_polygon(poly, q);
+  const int s0 = slab(interval_detail::down(sum.lo / q.n)), s1 = slab(interval_detail::up(sum.hi / q.n));
+  if (s0 != s1) return locate_in_polygon(poly, q);
+  bool inside = false;
+  const std::size_t n = poly.size();
+  for (std::uint32_t k = start_[s0]; k < start_[s0 + 1]; ++k) {
+    const std::uint32_t i = edges_[k];
+    if (edge_step(poly[i], poly[(i + 1) % n], q, inside)) return Where::Boundary;
   }
   return inside ? Where::Inside : Where::Outside;
 }
@@ -86,6 +149,7 @@ Where locate_in_polygon(const std::vector<P2>& poly, const Q2& q) {
 FacetRegion::FacetRegion(std::vector<std::vector<P2>> polygons, const std::vector<P2>& holes)
     : polygons_(std::move(polygons)) {
   const std::size_t n = polygons_.size();
+  for (const auto& poly : polygons_) slabs_.emplace_back(poly);
   // contains[i][j]: polygon j lies inside polygon i.
   std::vector<std::vector<bool>> contains(n, std::vector<bool>(n, false));
   for (std::size_t i = 0; i < n; ++i)
@@ -129,7 +193,7 @@ int FacetRegion::innermost(const Q2& q, bool& on_boundary) const {
   int best = -1;
   on_boundary = false;
   for (std::size_t i = 0; i < polygons_.size(); ++i) {
-    const Where w = locate_in_polygon(polygons_[i], q);
+    const Where w = slabs_[i].locate(polygons_[i], q);
     if (w == Where::Boundary) on_boundary = true;
     if (w == Where::Inside && (best < 0 || depth_[i] > depth_[best])) best = static_cast<int>(i);
   }

@@ -39,6 +39,21 @@ struct Q2 {
 enum class Where : std::uint8_t { Inside, Outside, Boundary };
 
 Where locate_in_polygon(const std::vector<P2>& polygon, const Q2& q);
+
+// A polygon's edges bucketed by horizontal slabs of y: locate() visits only the edges of
+// q's slab, with the same exact decisions as locate_in_polygon (a polygon whose edges are
+// the subsegment chains of a finely meshed facet has thousands of them).
+class PolygonSlabs {
+ public:
+  explicit PolygonSlabs(const std::vector<P2>& polygon);
+  Where locate(const std::vector<P2>& polygon, const Q2& q) const;
+
+ private:
+  int slab(double y) const;
+  double y0_ = 0, inv_ = 0;
+  int slabs_ = 1;
+  std::vector<std::uint32_t> start_{0, 0}, edges_;
+};
 // Twice the signed area of a polygon (shoelace), exact.
 mpq_class area2(const std::vector<P2>& polygon);
 // Twice the signed area of triangle abc, exact.
@@ -56,6 +71,7 @@ class FacetRegion {
   int innermost(const Q2& q, bool& on_boundary) const;
 
   std::vector<std::vector<P2>> polygons_;
+  std::vector<PolygonSlabs> slabs_;
   std::vector<int> parent_, depth_;
   std::vector<bool> removed_;  // cell of polygon i holds a hole point
   mpq_class area2_;

@@ -1,4 +1,5 @@
-// Uniform grids (see grid.hpp for the monotonicity argument that makes queries complete).
+// Grids adapted to density (see grid.hpp for the monotonicity argument that makes queries
+// complete and reports pairs once).
 #include "check/grid.hpp"
 
 #include <algorithm>
@@ -60,48 +61,95 @@ int GridFrame::cell(double x, int axis) const {
   return static_cast<int>(t);
 }
 
-PointGrid::PointGrid(std::span<const Point> points, double per_cell)
-    : frame_(bounding_box(points), static_cast<double>(points.size()) / per_cell) {
-  const std::size_t n = points.size();
-  std::vector<std::uint32_t> cell(n);
-  start_.assign(frame_.size() + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto c = frame_.cell_of(points[i]);
-    cell[i] = static_cast<std::uint32_t>(frame_.index(c[0], c[1], c[2]));
-    ++start_[cell[i] + 1];
+Box GridFrame::region(const std::array<int, 3>& c) const {
+  Box b{origin_, origin_};
+  for (int i = 0; i < 3; ++i) {
+    if (inv_[i] == 0) continue;
+    b.lo[i] = origin_[i] + c[i] / inv_[i];
+    b.hi[i] = origin_[i] + (c[i] + 1) / inv_[i];
   }
-  for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
+  return b;
+}
+
+PointGrid::PointGrid(std::span<const Point> points, double per_cell) {
+  const std::size_t n = points.size();
   ids_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) ids_[i] = static_cast<std::uint32_t>(i);
+  build(points, bounding_box(points), 0, static_cast<std::uint32_t>(n), per_cell, 0);
   sorted_.resize(n);
-  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t s = fill[cell[i]]++;
-    ids_[s] = static_cast<std::uint32_t>(i);
-    sorted_[s] = points[i];
+  for (std::size_t s = 0; s < n; ++s) sorted_[s] = points[ids_[s]];
+}
+
+// Node over ids_[b, e): its cells, the ids sorted into them, and nested nodes for crowded
+// cells (over the bounding box of their points).
+void PointGrid::build(std::span<const Point> points, const Box& extent, std::uint32_t b,
+                      std::uint32_t e, double per_cell, int depth) {
+  depth_ = std::max(depth_, depth);
+  const GridFrame frame(extent, (e - b) / per_cell);
+  const std::size_t cells = frame.size(), first = begin_.size();
+  nodes_.push_back({frame, static_cast<std::uint32_t>(first)});
+  begin_.resize(first + cells + 1, 0);
+  child_.resize(first + cells + 1, -1);
+  std::vector<std::uint32_t> cell(e - b), count(cells + 1, 0);
+  for (std::uint32_t s = b; s < e; ++s) {
+    cell[s - b] = static_cast<std::uint32_t>(frame.index(frame.cell_of(points[ids_[s]])));
+    ++count[cell[s - b] + 1];
+  }
+  for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
+  std::vector<std::uint32_t> sorted(e - b);
+  {
+    std::vector<std::uint32_t> fill(count.begin(), count.end() - 1);
+    for (std::uint32_t s = b; s < e; ++s) sorted[fill[cell[s - b]]++] = ids_[s];
+  }
+  std::copy(sorted.begin(), sorted.end(), ids_.begin() + b);
+  for (std::size_t c = 0; c <= cells; ++c) begin_[first + c] = b + count[c];
+  if (depth >= kMaxDepth) return;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::uint32_t cb = b + count[c], ce = b + count[c + 1];
+    if (ce - cb <= kLeafPoints) continue;
+    Box box{points[ids_[cb]], points[ids_[cb]]};
+    for (std::uint32_t s = cb; s < ce; ++s)
+      for (int a = 0; a < 3; ++a) {
+        box.lo[a] = std::min(box.lo[a], points[ids_[s]][a]);
+        box.hi[a] = std::max(box.hi[a], points[ids_[s]][a]);
+      }
+    if (box.lo == box.hi) continue;  // coincident points: nothing to separate
+    const auto nested = static_cast<std::int32_t>(nodes_.size());
+    build(points, box, cb, ce, per_cell, depth + 1);
+    child_[first + c] = nested;
   }
 }
 
-BoxGrid::BoxGrid(std::span<const Box> boxes, double cells) {
-  Box all = boxes.empty() ? Box{} : boxes[0];
-  for (const Box& b : boxes)
+namespace grid_detail {
+
+Buckets bucket(const GridFrame& frame, std::span<const Box> boxes, std::span<const std::uint32_t> ids) {
+  Buckets out;
+  out.start.assign(frame.size() + 1, 0);
+  auto each_cell = [&](const Box& b, auto&& f) {
+    const auto a = frame.cell_of(b.lo), z = frame.cell_of(b.hi);
+    for (int k = a[2]; k <= z[2]; ++k)
+      for (int j = a[1]; j <= z[1]; ++j)
+        for (int i = a[0]; i <= z[0]; ++i) f(frame.index(i, j, k));
+  };
+  for (std::uint32_t t : ids) each_cell(boxes[t], [&](std::size_t c) { ++out.start[c + 1]; });
+  for (std::size_t c = 0; c + 1 < out.start.size(); ++c) out.start[c + 1] += out.start[c];
+  out.ids.resize(out.start.back());
+  std::vector<std::size_t> fill(out.start.begin(), out.start.end() - 1);
+  for (std::uint32_t t : ids) each_cell(boxes[t], [&](std::size_t c) { out.ids[fill[c]++] = t; });
+  return out;
+}
+
+Box extent_of(std::span<const Box> boxes, std::span<const std::uint32_t> ids) {
+  Box all = ids.empty() ? Box{} : boxes[ids[0]];
+  for (std::uint32_t t : ids)
     for (int i = 0; i < 3; ++i) {
+      const Box& b = boxes[t];
       all.lo[i] = std::min(all.lo[i], b.lo[i]);
       all.hi[i] = std::max(all.hi[i], b.hi[i]);
     }
-  frame_ = GridFrame(all, cells);
-  start_.assign(frame_.size() + 1, 0);
-  auto each_cell = [&](const Box& b, auto&& f) {
-    const auto a = frame_.cell_of(b.lo), z = frame_.cell_of(b.hi);
-    for (int k = a[2]; k <= z[2]; ++k)
-      for (int j = a[1]; j <= z[1]; ++j)
-        for (int i = a[0]; i <= z[0]; ++i) f(frame_.index(i, j, k));
-  };
-  for (const Box& b : boxes) each_cell(b, [&](std::size_t c) { ++start_[c + 1]; });
-  for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
-  ids_.resize(start_.back());
-  std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t t = 0; t < boxes.size(); ++t)
-    each_cell(boxes[t], [&](std::size_t c) { ids_[fill[c]++] = static_cast<std::uint32_t>(t); });
+  return all;
 }
+
+}  // namespace grid_detail
 
 }  // namespace pdr::check

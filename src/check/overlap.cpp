@@ -28,8 +28,9 @@
 // around it are separable by one of their sides); for a shared vertex, the six face planes
 // and nine edge pairs through it (the SAT candidates of the two tangent cones). Each candidate is decided with exact signs
 // (signs.hpp); "weakly" means both closed half-spaces, so touching tets are separated.
-// Candidate pairs: a uniform grid over the tets' bounding boxes (grid.hpp); a pair is
-// examined in the one cell holding the low corner of the boxes' intersection. Boxes that
+// Candidate pairs: a grid over the tets' bounding boxes, nested where they crowd
+// (grid.hpp); a pair is examined once, in the cell holding the low corner of the boxes'
+// intersection. Boxes that
 // only touch have a separating axis-parallel plane for free. Pairs sharing
 // a face are left to validity.face_sharing; degenerate tets to validity.orientation.
 #include <algorithm>
@@ -206,96 +207,76 @@ void check_pairs(const Context& c, CheckResult& r) {
   const auto& pts = c.mesh.points;
   std::vector<Box> boxes(tets.size());
   for (std::size_t t = 0; t < tets.size(); ++t) boxes[t] = box_of<4>(pts, tets[t]);
-  // Cells a few times larger than a typical tet box: few boxes straddle cells, and the
-  // sweep along x inside a cell prunes most non-overlapping boxes (measured best).
-  const BoxGrid grid(boxes, static_cast<double>(tets.size()) / 32);
-  const GridFrame& frame = grid.frame();
-  // Cell ranges of the boxes: a pair is examined only in the cell holding the low corner of
-  // the intersection of its two ranges.
-  std::vector<std::array<int, 6>> range(tets.size());
-  for (std::size_t t = 0; t < tets.size(); ++t) {
-    const auto lo = frame.cell_of(boxes[t].lo), hi = frame.cell_of(boxes[t].hi);
-    range[t] = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
-  }
+  // Degenerate tets are left to validity.orientation: an empty box is never paired.
+  for (std::size_t t = 0; t < tets.size(); ++t)
+    if (c.orientation[t] == Sign::Zero) boxes[t] = Box{{1, 1, 1}, {0, 0, 0}};
   auto make = [&](std::uint32_t t) {
     Tet4 x{tets[t], {&pts[tets[t][0]], &pts[tets[t][1]], &pts[tets[t][2]], &pts[tets[t][3]]}};
     if (c.orientation[t] == Sign::Negative) std::swap(x.id[1], x.id[2]), std::swap(x.p[1], x.p[2]);
     return x;
   };
   const Options& o = c.options;
-  const auto dims = frame.dims();
-  std::vector<Collector> parts(std::max(1u, o.threads), Collector(o.max_reported));
-  parallel_blocks(grid.cells(), o.threads, 256, [&](unsigned w, std::size_t b, std::size_t e) {
-    Collector& col = parts[w];
-    const std::uint64_t before = signs::exact_evaluations();
-    // The cell's boxes, copied and sorted by low x: a sweep stops at the first box that
-    // starts beyond the current one.
-    std::vector<std::pair<Box, std::uint32_t>> local;
-    std::optional<Tet4> S;
+  const unsigned workers = std::max(1u, o.threads);
+  std::vector<Collector> parts(workers, Collector(o.max_reported));
+  std::vector<std::uint64_t> evaluations(workers, 0);
+  // Per worker: the last tet s seen and its planes (the sweep pairs one s with many t).
+  struct Cache {
+    std::uint32_t s = UINT32_MAX;
+    Tet4 S;
     Planes PS;
     bool has_planes = false;
-    for (std::size_t cell = b; cell < e; ++cell) {
-      const int ci = static_cast<int>(cell % dims[0]), cj = static_cast<int>(cell / dims[0] % dims[1]),
-                ck = static_cast<int>(cell / dims[0] / dims[1]);
-      local.clear();
-      for (std::uint32_t t : grid.in_cell(cell))
-        if (c.orientation[t] != Sign::Zero) local.emplace_back(boxes[t], t);
-      std::sort(local.begin(), local.end(), [](const auto& x, const auto& y) {
-        return x.first.lo[0] < y.first.lo[0] || (x.first.lo[0] == y.first.lo[0] && x.second < y.second);
-      });
-      for (std::size_t i = 0; i < local.size(); ++i) {
-        const Box& bs = local[i].first;
-        const std::uint32_t s = local[i].second;
-        const auto& rs = range[s];
-        S.reset();
-        has_planes = false;
-        for (std::size_t j = i + 1; j < local.size() && local[j].first.lo[0] <= bs.hi[0]; ++j) {
-          const Box& bt = local[j].first;
-          const std::uint32_t t = local[j].second;
-          if (bs.lo[1] > bt.hi[1] || bt.lo[1] > bs.hi[1] || bs.lo[2] > bt.hi[2] || bt.lo[2] > bs.hi[2])
-            continue;
-          const auto& rt = range[t];
-          if (std::max(rs[0], rt[0]) != ci || std::max(rs[1], rt[1]) != cj || std::max(rs[2], rt[2]) != ck)
-            continue;
-          if (shared(tets[s], tets[t]) >= 3) continue;
-          ++col.checked;
-          int axis = -1;
-          double plane = 0;
-          for (int a = 0; a < 3 && axis < 0; ++a) {
-            if (bs.hi[a] == bt.lo[a]) axis = a, plane = bs.hi[a];
-            if (bt.hi[a] == bs.lo[a]) axis = a, plane = bt.hi[a];
-          }
-          if (!S) S = make(s);
-          const Tet4 T = make(t);
-          Contact k;
-          if (axis >= 0) {
-            k = touching(*S, T, axis, plane);
-          } else {
-            if (!has_planes) PS = Planes(*S), has_planes = true;
-            k = contact(*S, PS, T);
-          }
-          if (k == Contact::Separated) continue;
-          const std::uint32_t lo = std::min(s, t), hi = std::max(s, t);
-          const std::uint64_t key = (std::uint64_t{lo} << 32) | hi;
-          ++col.counts[k == Contact::Overlap ? "overlapping_pairs" : "coplanar_overlaps"];
-          if (!col.wants(key)) {
-            col.violation(key);
-            continue;
-          }
-          std::vector<std::uint32_t> vs(tets[lo].begin(), tets[lo].end());
-          vs.insert(vs.end(), tets[hi].begin(), tets[hi].end());
-          Finding f = make_finding(c.mesh, "tet", lo, vs,
-                                   "validity.overlap: tets " + std::to_string(lo) + " and " +
-                                       std::to_string(hi) +
-                                       (k == Contact::Overlap ? " overlap"
-                                                              : " touch through partially overlapping coplanar faces"));
-          f.value = static_cast<double>(hi);
-          col.violation(key, std::move(f));
-        }
-      }
+  };
+  std::vector<Cache> cache(workers);
+  auto loop = [&](std::size_t n, auto&& body) {
+    parallel_blocks(n, workers, 256, [&](unsigned w, std::size_t b, std::size_t e) {
+      const std::uint64_t before = signs::exact_evaluations();
+      body(w, b, e);
+      evaluations[w] += signs::exact_evaluations() - before;
+    });
+  };
+  // Cells a few times larger than a typical tet box: few boxes straddle cells, and the
+  // sweep along x inside a cell prunes most non-overlapping boxes (measured best).
+  for_each_box_pair(boxes, 32, loop, [&](unsigned w, std::uint32_t s, std::uint32_t t) {
+    Collector& col = parts[w];
+    if (shared(tets[s], tets[t]) >= 3) return;
+    ++col.checked;
+    const Box& bs = boxes[s];
+    const Box& bt = boxes[t];
+    int axis = -1;
+    double plane = 0;
+    for (int a = 0; a < 3 && axis < 0; ++a) {
+      if (bs.hi[a] == bt.lo[a]) axis = a, plane = bs.hi[a];
+      if (bt.hi[a] == bs.lo[a]) axis = a, plane = bt.hi[a];
     }
-    col.counts["exact_evaluations"] += signs::exact_evaluations() - before;
+    Cache& k = cache[w];
+    if (k.s != s) k.s = s, k.S = make(s), k.has_planes = false;
+    const Tet4 T = make(t);
+    Contact contact_kind;
+    if (axis >= 0) {
+      contact_kind = touching(k.S, T, axis, plane);
+    } else {
+      if (!k.has_planes) k.PS = Planes(k.S), k.has_planes = true;
+      contact_kind = contact(k.S, k.PS, T);
+    }
+    if (contact_kind == Contact::Separated) return;
+    const std::uint32_t lo = std::min(s, t), hi = std::max(s, t);
+    const std::uint64_t key = (std::uint64_t{lo} << 32) | hi;
+    ++col.counts[contact_kind == Contact::Overlap ? "overlapping_pairs" : "coplanar_overlaps"];
+    if (!col.wants(key)) {
+      col.violation(key);
+      return;
+    }
+    std::vector<std::uint32_t> vs(tets[lo].begin(), tets[lo].end());
+    vs.insert(vs.end(), tets[hi].begin(), tets[hi].end());
+    Finding f = make_finding(c.mesh, "tet", lo, vs,
+                             "validity.overlap: tets " + std::to_string(lo) + " and " + std::to_string(hi) +
+                                 (contact_kind == Contact::Overlap
+                                      ? " overlap"
+                                      : " touch through partially overlapping coplanar faces"));
+    f.value = static_cast<double>(hi);
+    col.violation(key, std::move(f));
   });
+  for (unsigned w = 0; w < workers; ++w) parts[w].counts["exact_evaluations"] += evaluations[w];
   merge_into(parts, r, o.max_reported);
   r.counts["pairs_examined"] = r.checked;
 }

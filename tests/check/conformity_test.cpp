@@ -1,5 +1,6 @@
 // conformity.* and encroachment.* against a domain; FacetRegion; tolerance classification.
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include <cmath>
 
@@ -144,6 +145,31 @@ TEST(FacetRegion, NonConvexPolygon) {
   EXPECT_EQ(r.locate(Q2::at({1.5, 1.5})), Where::Outside);
   EXPECT_EQ(r.locate(Q2::centroid({1, 1}, {2, 1}, {1, 2})), Where::Outside);
   EXPECT_EQ(r.locate(Q2::centroid({0, 0}, {1, 0}, {0, 1})), Where::Inside);
+}
+
+// The slab index visits only the edges of the query's slab and must decide as the scan of
+// every edge does: star polygons of up to 2,000 vertices (many at one y, horizontal edges,
+// vertices repeated along chains as on a meshed facet), queried at vertices, edge
+// midpoints, triangle centroids and random points.
+RC_GTEST_PROP(FacetRegion, SlabsLocateAsTheFullScan, ()) {
+  const int n = *rc::gen::inRange(3, 2000);
+  const int levels = *rc::gen::inRange(1, 64);  // few distinct y values: many ties
+  std::vector<P2> poly;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    const double r = 1 + *rc::gen::inRange(0, 1000) / 1000.0;
+    const double y = std::round(r * std::sin(a) * levels) / levels;
+    poly.push_back({r * std::cos(a), y});
+  }
+  const PolygonSlabs slabs(poly);
+  auto agree = [&](const Q2& q) { RC_ASSERT(slabs.locate(poly, q) == locate_in_polygon(poly, q)); };
+  for (int k = 0; k < 200; ++k) {
+    const auto i = *rc::gen::inRange(0, n), j = *rc::gen::inRange(0, n), l = *rc::gen::inRange(0, n);
+    agree(Q2::at(poly[i]));
+    agree({{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
+    agree(Q2::centroid(poly[i], poly[j], poly[l]));
+    agree(Q2::at({*rc::gen::inRange(-2100, 2100) / 1000.0, *rc::gen::inRange(-2100, 2100) / 1000.0}));
+  }
 }
 
 }  // namespace

@@ -1,0 +1,139 @@
+// The checker's candidate grids (src/check/grid.hpp) against brute force: a point query
+// visits every stored point inside its box exactly once, and the box-pair enumeration
+// reports every intersecting pair exactly once, on clouds graded over many scales (the
+// shape of a mesh refined to a small gap), with coincident points and empty boxes. A query
+// inside a crowded patch visits few points: the grid nests where points crowd.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "check/grid.hpp"
+#include "check/parallel.hpp"
+
+namespace pdr::check {
+namespace {
+
+// Points: a coarse cloud over [0, 1]^3 and clusters of `fine` points each at scales
+// 10^-s around random centres, some repeated exactly; `scale` is each point's spacing.
+std::vector<Point> graded_cloud(std::vector<double>* spacing = nullptr) {
+  const auto coarse = *rc::gen::inRange(0, 200);
+  const auto clusters = *rc::gen::inRange(1, 4);
+  std::vector<Point> p;
+  auto unit = [] { return *rc::gen::inRange(0, 1 << 20) / double(1 << 20); };
+  std::vector<double> h;
+  for (int i = 0; i < coarse; ++i) p.push_back({unit(), unit(), unit()}), h.push_back(0.1);
+  for (int c = 0; c < clusters; ++c) {
+    const Point centre{unit(), unit(), unit()};
+    const double scale = std::pow(10.0, -*rc::gen::inRange(2, 12));
+    const bool flat = *rc::gen::arbitrary<bool>();  // a patch of one plane, as on a facet
+    const int fine = *rc::gen::inRange(50, 900);
+    for (int i = 0; i < fine; ++i) {
+      p.push_back({centre[0] + scale * unit(), centre[1] + scale * unit(),
+                   flat ? centre[2] : centre[2] + scale * unit()});
+      h.push_back(scale / (flat ? std::sqrt(fine) : std::cbrt(fine)));
+    }
+  }
+  const int copies = *rc::gen::inRange(0, 40);
+  for (int i = 0; i < copies && !p.empty(); ++i) {
+    const std::size_t k = *rc::gen::inRange<std::size_t>(0, p.size());
+    p.push_back(p[k]), h.push_back(h[k]);
+  }
+  if (spacing) *spacing = std::move(h);
+  return p;
+}
+
+bool inside(const Point& p, const Box& b) {
+  for (int i = 0; i < 3; ++i)
+    if (p[i] < b.lo[i] || p[i] > b.hi[i]) return false;
+  return true;
+}
+
+Box box_around(const std::vector<Point>& p, std::size_t i, double r) {
+  return {{p[i][0] - r, p[i][1] - r, p[i][2] - r}, {p[i][0] + r, p[i][1] + r, p[i][2] + r}};
+}
+
+RC_GTEST_PROP(Grid, PointQueriesVisitEveryPointInTheBoxOnce, ()) {
+  const std::vector<Point> p = graded_cloud();
+  RC_PRE(!p.empty());
+  const PointGrid grid(p);
+  for (int q = 0; q < 40; ++q) {
+    const std::size_t i = *rc::gen::inRange<std::size_t>(0, p.size());
+    const double r = std::pow(10.0, -*rc::gen::inRange(0, 14));
+    const Box b = box_around(p, i, r);
+    std::map<std::uint32_t, int> seen;
+    grid.query(b, [&](std::uint32_t id, const Point& x) {
+      RC_ASSERT(x == p[id]);
+      ++seen[id];
+    });
+    for (const auto& [id, n] : seen) RC_ASSERT(n == 1);
+    for (std::uint32_t id = 0; id < p.size(); ++id)
+      if (inside(p[id], b)) RC_ASSERT(seen.count(id) == 1u);
+  }
+}
+
+TEST(Grid, AQueryInACrowdedPatchVisitsFewPoints) {
+  // 100,000 points in a patch 1e-6 wide inside a unit cube of 2,000: a uniform grid puts the
+  // patch in one cell.
+  std::vector<Point> p;
+  std::uint64_t s = 12345;
+  auto unit = [&] {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(s >> 11) / double(1ull << 53);
+  };
+  for (int i = 0; i < 2000; ++i) p.push_back({unit(), unit(), unit()});
+  for (int i = 0; i < 100000; ++i) p.push_back({0.5 + 1e-6 * unit(), 0.5 + 1e-6 * unit(), 0.5 + 1e-6 * unit()});
+  const PointGrid grid(p);
+  EXPECT_GT(grid.depth(), 0);
+  std::size_t worst = 0;
+  for (std::size_t i = 2000; i < p.size(); i += 997) {
+    std::size_t visited = 0;
+    grid.query(box_around(p, i, 1e-9), [&](std::uint32_t, const Point&) { ++visited; });
+    worst = std::max(worst, visited);
+  }
+  EXPECT_LE(worst, 8 * PointGrid::kLeafPoints);
+}
+
+std::vector<Box> graded_boxes() {
+  std::vector<double> h;
+  const std::vector<Point> p = graded_cloud(&h);
+  std::vector<Box> boxes;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = h[i] * std::ldexp(1.0, *rc::gen::inRange(-4, 3));
+    Box b = box_around(p, i, r);
+    if (*rc::gen::inRange(0, 50) == 0) std::swap(b.lo, b.hi);  // empty: never paired
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
+RC_GTEST_PROP(Grid, BoxPairsAreEveryIntersectingPairOnce, ()) {
+  const std::vector<Box> boxes = graded_boxes();
+  const unsigned threads = *rc::gen::inRange(1u, 3u);
+  std::vector<std::map<std::pair<std::uint32_t, std::uint32_t>, int>> found(threads);
+  auto loop = [&](std::size_t n, auto&& body) { parallel_blocks(n, threads, 7, body); };
+  for_each_box_pair(boxes, 4, loop, [&](unsigned w, std::uint32_t s, std::uint32_t t) {
+    RC_ASSERT(s != t);
+    ++found[w][{std::min(s, t), std::max(s, t)}];
+  });
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> all;
+  for (const auto& f : found)
+    for (const auto& [k, n] : f) all[k] += n;
+  std::size_t expected = 0;
+  for (std::uint32_t s = 0; s < boxes.size(); ++s)
+    for (std::uint32_t t = s + 1; t < boxes.size(); ++t) {
+      const bool empty = !(boxes[s].lo[0] <= boxes[s].hi[0]) || !(boxes[t].lo[0] <= boxes[t].hi[0]);
+      if (empty || !boxes_meet(boxes[s], boxes[t])) continue;
+      ++expected;
+      const auto it = all.find({s, t});
+      RC_ASSERT(it != all.end());
+      RC_ASSERT(it->second == 1);
+    }
+  RC_ASSERT(all.size() == expected);
+}
+
+}  // namespace
+}  // namespace pdr::check
