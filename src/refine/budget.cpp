@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "refine/seq_refinement.hpp"
 
@@ -21,9 +22,11 @@ double box_volume(std::span<const Point> pts) {
 
 VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o) {
   const double box = box_volume(points);
-  double u = o.d > 0 && std::isfinite(o.d) ? o.d / 2 : std::cbrt(box) / 8;
-  if (o.size) u = std::min(u, *o.size / 2);
-  if (o.max_volume) u = std::min(u, std::cbrt(*o.max_volume));
+  box_share_ = std::cbrt(box) / 8;
+  without_d_ = std::numeric_limits<double>::infinity();
+  if (o.size) without_d_ = std::min(without_d_, *o.size / 2);
+  if (o.max_volume) without_d_ = std::min(without_d_, std::cbrt(*o.max_volume));
+  const double u = resolution_at(o.d);
   resolution_ = u;
   user_cap_ = o.max_vertices != 0;
   if (user_cap_) {
@@ -32,6 +35,10 @@ VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o
     const double cap = 1000.0 + 64.0 * static_cast<double>(points.size()) + 16.0 * box / (u * u * u);
     cap_ = static_cast<std::size_t>(std::min(cap, 2.0e9));
   }
+}
+
+double VertexBudget::resolution_at(double d) const {
+  return std::min(d > 0 && std::isfinite(d) ? d / 2 : box_share_, without_d_);
 }
 
 bool VertexBudget::reached(std::size_t vertices, std::string& why) const {

@@ -3,7 +3,8 @@
 // than h; outside the theory, where that argument fails, the cap ends it).
 //
 // resolution(): the smallest of d/2, L/2 and cbrt(V) that the run was given (without d,
-// an eighth of the cube root of the bounding box's volume). The cap is
+// an eighth of the cube root of the bounding box's volume); resolution_at(d_v) the same
+// with a local d (the protected lengths at acute vertices, refine/split.hpp). The cap is
 // RefineOptions::max_vertices, or 1000 + 64 n + 16 (box volume) / u^3 for n input vertices
 // and resolution u: a resource limit, never a geometric decision.
 #pragma once
@@ -25,12 +26,17 @@ class VertexBudget {
   VertexBudget(std::span<const Point> points, const RefineOptions& o);
 
   double resolution() const { return resolution_; }
+  // The resolution with a local d in place of the domain's (the same rule: d/2, L/2 and
+  // cbrt(V), the box's share without a finite d).
+  double resolution_at(double d) const;
   std::size_t cap() const { return cap_; }
   // True when `vertices` reached the cap; `why` then says so (refine.cap: ...).
   bool reached(std::size_t vertices, std::string& why) const;
 
  private:
   double resolution_ = 0;
+  double without_d_ = 0;  // the smallest of L/2 and cbrt(V), or infinity
+  double box_share_ = 0;  // cbrt(box volume) / 8
   std::size_t cap_ = 0;
   bool user_cap_ = false;
 };

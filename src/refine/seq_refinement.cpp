@@ -284,7 +284,8 @@ class Refiner {
     double cap = std::numeric_limits<double>::infinity();
     if (o_.size) cap = std::min(cap, *o_.size);
     if (o_.max_volume) cap = std::min(cap, std::cbrt(*o_.max_volume));
-    guard_ = SplitGuard(m_.surf, acute, budget_.resolution() / 64, o_.cylinders, cap);
+    guard_ = SplitGuard(
+        m_.surf, acute, [b = budget_](double d) { return b.resolution_at(d) / 64; }, o_.cylinders, cap);
     const TetStore& s = m_.dt.store();
     std::vector<TetId> all;
     for (TetId t = 0; t < s.slots(); ++t)

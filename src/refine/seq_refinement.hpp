@@ -33,7 +33,8 @@
 //   - concentric shells at the acute vertices (RefineOptions::acute_vertices from the
 //     domain analysis, refine/split.hpp);
 //   - protected length (resolution / 64, the resolution being the smallest of d/2, L/2,
-//     cbrt(V)): on segments and facets at an acute vertex nothing is split below it; the
+//     cbrt(V), with d the element's own: the d the surface mesh sized it for, local when
+//     it is graded): on segments and facets at an acute vertex nothing is split below it; the
 //     tet (or encroached element) whose refinement needed that split is refused, with the
 //     reason (repairs of rounding, refine/flat.hpp, and of conformity are not held);
 //   - the vertex cap (RefineOptions::max_vertices, else derived from the input size,

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "domain/distance.hpp"
 #include "geom/construct.hpp"
@@ -54,9 +55,8 @@ std::vector<double> protecting_cylinders(const domain::DomainAnalysis& an) {
 }
 
 SplitGuard::SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& acute,
-                       double protected_length, const std::vector<double>& cylinders,
-                       double cylinder_cap)
-    : protected_(protected_length) {
+                       Floor floor, const std::vector<double>& cylinders, double cylinder_cap)
+    : floor_(std::move(floor)) {
   if (acute.empty()) return;
   acute_.assign(m.vertex_count(), 0);
   for (const std::uint32_t v : acute)
@@ -97,10 +97,11 @@ std::string SplitGuard::refuse_subfacet(const surface::SurfaceMesh& m, std::uint
       return os.str();
     }
   }
-  if (r >= protected_) return {};
+  const double floor = floor_(m.subfacet_size(f));
+  if (r >= floor) return {};
   os << "refine.protected: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2]
      << ") of " << m.facet_name(x.facet) << " has circumradius " << r
-     << " < the protected length " << protected_
+     << " < the protected length " << floor
      << " of a facet at an acute input vertex (angle < 90 deg)";
   return os.str();
 }
@@ -138,12 +139,13 @@ SplitGuard::Plan SplitGuard::plan(const surface::SurfaceMesh& m, std::uint32_t s
     t = sa ? from / l : 1 - from / l;
   }
   const double piece = std::min(t, 1 - t) * l;
-  if (piece < protected_ && !below_floor) {
+  const double floor = below_floor ? 0.0 : floor_(m.subsegment_size(s));
+  if (piece < floor) {
     std::ostringstream os;
     os.precision(6);
     os << "refine.protected: splitting subsegment (" << g.v[0] << ", " << g.v[1] << ") of "
        << m.segment_name(g.segment) << " would leave a piece of length " << piece
-       << " < the protected length " << protected_
+       << " < the protected length " << floor
        << " of a segment at an acute input vertex (angle < 90 deg)";
     r.ok = false;
     r.reason = os.str();

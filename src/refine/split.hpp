@@ -11,13 +11,20 @@
 //                   subsegment of a neighbouring segment at the same radius (the cascade
 //                   around a small angle stops); otherwise the midpoint;
 //   protected       on a guarded segment no split leaves a piece shorter than the
-//                   protected length (the caller's resolution / 64: a floor on how fine the
-//                   shells go); plan then refuses, with the reason, and the caller reports
-//                   the element it could not refine. Likewise a subfacet of circumradius
-//                   below the protected length on a guarded facet (one containing a
-//                   guarded segment) is not refined (refuse_subfacet): near a sharp
-//                   dihedral the subfacets of the two facets encroach each other at every
-//                   scale, and this floor ends that cascade. Rounding repairs (refine/
+//                   protected length (the caller's floor of the subsegment's local d, the
+//                   d the surface mesh sized it for: resolution / 64 with d_local in
+//                   place of d, a floor on how fine the shells go); plan then refuses,
+//                   with the reason, and the caller reports the element it could not
+//                   refine. Likewise a subfacet of circumradius below the protected length
+//                   of its local d on a guarded facet (one containing a guarded segment) is
+//                   not refined (refuse_subfacet). With the surface graded by position the
+//                   floor is local, as the protecting balls of Cheng, Dey, Ramos and Ray
+//                   are sized by the local feature size: a small feature elsewhere no
+//                   longer makes every acute corner as fine as it (a pyramid 6 high with a
+//                   void 0.002 above its base: the apex refined to edges of 3.5e-6 before,
+//                   of 4.5e-4 now, at V = 0.001); uniform, it is the domain's d
+//                   everywhere. Near a sharp dihedral the subfacets of the two facets
+//                   encroach each other at every scale, and this floor ends that cascade. Rounding repairs (refine/
 //                   flat.hpp rule 1: a flat tet on a facet) and conformity repairs
 //                   (refine/conformity.hpp: an element of D missing from T) are not held
 //                   by it (plan's below_floor); the vertex cap bounds them.
@@ -46,6 +53,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -75,8 +83,11 @@ std::vector<double> protecting_cylinders(const domain::DomainAnalysis& an);
 class SplitGuard {
  public:
   SplitGuard() = default;  // no guard: midpoints
-  SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& acute,
-             double protected_length, const std::vector<double>& cylinders = {},
+  // The protected length of an element refined for the local d `d` (surface::SurfaceMesh::
+  // subsegment_size, subfacet_size).
+  using Floor = std::function<double(double d)>;
+  SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& acute, Floor floor,
+             const std::vector<double>& cylinders = {},
              double cylinder_cap = std::numeric_limits<double>::infinity());
 
   struct Plan {
@@ -91,13 +102,12 @@ class SplitGuard {
   // Why subfacet f may not be refined, or empty.
   std::string refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f) const;
   bool active() const { return !acute_.empty(); }
-  double protected_length() const { return protected_; }
 
  private:
   std::vector<std::uint8_t> acute_;    // per input vertex of D
   std::vector<std::uint8_t> guarded_;  // per segment
   std::vector<std::uint8_t> guarded_facet_;
-  double protected_ = 0;
+  Floor floor_;
   struct Cylinder {
     Point a, b;
     double radius = 0;

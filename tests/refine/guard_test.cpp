@@ -39,6 +39,7 @@ struct GuardRun {
   bool admissible = true;
   RefineResult rr;
   check::Report report;
+  MeshData data;
   std::size_t tets = 0;
 };
 
@@ -52,11 +53,11 @@ GuardRun mesh(const Plc& plc, const Sizes& sz) {
   o.size = sz.size;
   set_domain(o, an);
   r.rr = refine(vm, o);
-  const MeshData m = to_mesh_data(vm.dt, vm.inside);
-  r.tets = m.tets.size();
+  r.data = to_mesh_data(vm.dt, vm.inside);
+  r.tets = r.data.tets.size();
   check::Options co;
   co.ratio_bound = 2.0;
-  r.report = check::check_mesh(check::view_of(m), an.domain.plc, co);
+  r.report = check::check_mesh(check::view_of(r.data), an.domain.plc, co);
   return r;
 }
 
@@ -202,7 +203,7 @@ TEST(RefineGuard, ProtectedLengthRefusesWithAReason) {
   // split, and the run still ends, listing why.
   const DomainAnalysis an = analyze(wedge(15));
   const SurfaceInit si = init_surface(an);
-  const SplitGuard g(si.mesh, acute_vertices(an.report), 1e3);
+  const SplitGuard g(si.mesh, acute_vertices(an.report), [](double) { return 1e3; });
   ASSERT_TRUE(g.active());
   bool refused = false;
   for (std::uint32_t s = 0; s < si.mesh.subsegments().size(); ++s) {
@@ -267,7 +268,7 @@ TEST(RefineGuard, CylinderRefusesSubfacetsNearTheSharpSegment) {
   std::vector<double> radius = protecting_cylinders(an);
   for (double& r : radius)
     if (r > 0) r = 1e3;  // every subfacet of those facets lies in its cylinder
-  const SplitGuard g(si.mesh, acute_vertices(an.report), 0.0, radius);
+  const SplitGuard g(si.mesh, acute_vertices(an.report), [](double) { return 0.0; }, radius);
   std::size_t refused = 0, free = 0;
   for (std::uint32_t f = 0; f < si.mesh.subfacets().size(); ++f) {
     if (!si.mesh.subfacet(f).alive) continue;
@@ -321,6 +322,39 @@ TEST(RefineGuard, CylindersStopTheCascadeAtASharpDihedral) {
       EXPECT_EQ(c.violations, r.rr.leftovers.size());
     }
   }
+}
+
+
+// The protected length at an acute vertex follows the local feature size, as protecting
+// balls do: a void 0.002 above the base of a pyramid 6 high makes the surface fine next to
+// it (graded by position), and the apex, 6 away, is refined no finer than for itself. With
+// the domain's d (0.0014) as every guarded element's d, the apex was refined down to edges
+// of 3.5e-6 (pieces of the shells refused below 1.1e-5); with the local d, the shells stop
+// at cbrt(V) / 64 there.
+TEST(RefineGuard, ProtectedLengthIsLocalToTheAcuteVertex) {
+  Plc plc = merge(pyramid(4, 6), box({-0.05, -0.05, 0.002}, {0.05, 0.05, 0.102}));
+  plc.holes.push_back({0, 0, 0.05});
+  relabel(plc);
+  const GuardRun r = mesh(plc, Sizes{0.001, {}});
+  EXPECT_FALSE(r.admissible);
+  EXPECT_TRUE(r.rr.stop_reason.empty()) << r.rr.stop_reason;
+  for (const auto& c : r.report.checks) {
+    if (c.status != check::Status::Fail) continue;
+    EXPECT_TRUE(c.id == "quality.ratio" || c.id.rfind("encroachment.", 0) == 0) << c.id;
+  }
+  double near_apex = std::numeric_limits<double>::infinity();
+  const MeshData m = r.data;
+  for (const auto& t : m.tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const Point& a = m.points[t[i]];
+        const Point& b = m.points[t[j]];
+        if (a[2] < 5 && b[2] < 5) continue;
+        near_apex = std::min(near_apex, std::sqrt(dist2_point_point(a, b)));
+      }
+  EXPECT_GT(near_apex, 1e-4);
+  for (const auto& l : r.rr.leftovers)
+    EXPECT_NE(l.reason.find("refine.protected"), std::string::npos) << l.reason;
 }
 
 }  // namespace
