@@ -92,19 +92,11 @@ TEST(OutsideProperty, EndsInExit0Or3WithAConformingDelaunayMesh) {
   check_property("EndsInExit0Or3WithAConformingDelaunayMesh", cases(), [] {
     const Plc plc = *gen_outside_domain(min_corner());
     const Sizing z = *gen_fine_sizing(plc);
-    // The case is on disk before it runs: a crash or a kill leaves it behind.
-    std::ofstream(counterexample_path() + ".running")
-        << poly_text(plc, "the case OutsideProperty was running\noptions:" + z.options());
     bool admissible = true;
-    const std::string why = outside_failure(plc, z, &admissible);
+    judge_case("OutsideProperty.EndsInExit0Or3WithAConformingDelaunayMesh", plc, z,
+               "a domain outside the theory does not end in a conforming Delaunay mesh",
+               [&] { return outside_failure(plc, z, &admissible); });
     RC_CLASSIFY(!admissible, "outside the theory");
-    if (why.empty()) return;
-    const std::string path = counterexample_path();
-    std::ofstream(path) << poly_text(
-        plc, "shrunk counterexample of OutsideProperty.EndsInExit0Or3WithAConformingDelaunayMesh\n"
-             "options:" + z.options());
-    RC_LOG() << "options:" << z.options() << "\nwritten to " << path << "\n" << why;
-    RC_FAIL("a domain outside the theory does not end in a conforming Delaunay mesh");
   }, seed());
 }
 
@@ -115,15 +107,9 @@ TEST(OutsideProperty, EndsInExit0Or3WithAConformingDelaunayMesh) {
 TEST(OutsideProperty, RotatedToriOfTriangleFacetsEndConforming) {
   check_property("RotatedToriOfTriangleFacetsEndConforming", std::max(1, cases() / 3), [] {
     const Plc plc = *gen_rotated_torus_of_triangles();
-    std::ofstream(counterexample_path() + ".running")
-        << poly_text(plc, "the case RotatedToriOfTriangleFacetsEndConforming was running");
-    const std::string why = outside_failure(plc, Sizing{});
-    if (why.empty()) return;
-    const std::string path = counterexample_path();
-    std::ofstream(path) << poly_text(
-        plc, "shrunk counterexample of OutsideProperty.RotatedToriOfTriangleFacetsEndConforming");
-    RC_LOG() << "written to " << path << "\n" << why;
-    RC_FAIL("a rotated torus of triangle facets does not end in a conforming Delaunay mesh");
+    judge_case("OutsideProperty.RotatedToriOfTriangleFacetsEndConforming", plc, Sizing{},
+               "a rotated torus of triangle facets does not end in a conforming Delaunay mesh",
+               [&] { return outside_failure(plc, Sizing{}); });
   }, seed());
 }
 
@@ -134,17 +120,9 @@ TEST(OutsideProperty, PyramidsAndTwistedPrismsEndConforming) {
   check_property("PyramidsAndTwistedPrismsEndConforming", std::max(1, cases() / 3), [] {
     const Plc plc = *gen_pyramid_or_twisted_prism();
     const Sizing z = *gen_fine_sizing(plc);
-    std::ofstream(counterexample_path() + ".running")
-        << poly_text(plc, "the case PyramidsAndTwistedPrismsEndConforming was running\noptions:" +
-                              z.options());
-    const std::string why = outside_failure(plc, z);
-    if (why.empty()) return;
-    const std::string path = counterexample_path();
-    std::ofstream(path) << poly_text(
-        plc, "shrunk counterexample of OutsideProperty.PyramidsAndTwistedPrismsEndConforming\n"
-             "options:" + z.options());
-    RC_LOG() << "options:" << z.options() << "\nwritten to " << path << "\n" << why;
-    RC_FAIL("a pyramid or twisted prism does not end in a conforming Delaunay mesh");
+    judge_case("OutsideProperty.PyramidsAndTwistedPrismsEndConforming", plc, z,
+               "a pyramid or twisted prism does not end in a conforming Delaunay mesh",
+               [&] { return outside_failure(plc, z); });
   }, seed());
 }
 

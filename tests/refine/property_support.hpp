@@ -21,6 +21,7 @@
 
 #include "app/commands.hpp"
 #include "mesh/plc.hpp"
+#include "support/admissible_fixtures.hpp"
 
 namespace pdr::refine::test {
 
@@ -91,6 +92,24 @@ inline rc::Gen<Sizing> gen_sizing(const Plc& plc) {
 inline std::string counterexample_path() {
   const char* env = std::getenv("PDR_REFINE_COUNTEREXAMPLE");
   return env ? env : "refine-counterexample.poly";
+}
+
+// One case of property `name` (Suite.Test): written to <counterexample>.running before it
+// runs (a crash or a kill leaves it behind), then `failure()` ("" when the case holds); a
+// failing case is written to the counterexample path after every shrinking step, and the
+// property fails with `what`.
+template <class Failure>
+void judge_case(const std::string& name, const Plc& plc, const Sizing& z, const std::string& what,
+                Failure&& failure) {
+  std::ofstream(counterexample_path() + ".running")
+      << pdr::test::poly_text(plc, "the case " + name + " was running\noptions:" + z.options());
+  const std::string why = failure();
+  if (why.empty()) return;
+  const std::string path = counterexample_path();
+  std::ofstream(path) << pdr::test::poly_text(
+      plc, "shrunk counterexample of " + name + "\noptions:" + z.options());
+  RC_LOG() << "options:" << z.options() << "\nwritten to " << path << "\n" << why;
+  RC_FAIL(what);
 }
 
 // Runs a property with `n` successes required (RC_PARAMS still sets the seed and size);

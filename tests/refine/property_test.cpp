@@ -98,13 +98,8 @@ TEST(RefineProperty, MeshPassesEveryCheck) {
   check_property("MeshPassesEveryCheck", cases(), [] {
     const Plc plc = *gen_admissible_domain();
     const Sizing z = *gen_sizing(plc);
-    const std::string why = mesh_failure(plc, z);
-    if (why.empty()) return;
-    const std::string path = counterexample_path();
-    std::ofstream(path) << poly_text(plc, "shrunk counterexample of RefineProperty.MeshPassesEveryCheck\n"
-                                          "options:" + z.options());
-    RC_LOG() << "options:" << z.options() << "\nwritten to " << path << "\n" << why;
-    RC_FAIL("the mesh of an admissible domain fails");
+    judge_case("RefineProperty.MeshPassesEveryCheck", plc, z, "the mesh of an admissible domain fails",
+               [&] { return mesh_failure(plc, z); });
   });
 }
 
@@ -119,14 +114,9 @@ TEST(RefineProperty, MeshPassesEveryCheckWithGradedSurface) {
     const Plc plc = small ? *gen_small_feature_domain() : *gen_admissible_domain();
     Sizing z = *gen_sizing(plc);
     z.graded = !small;
-    const std::string why = mesh_failure(plc, z);
-    if (why.empty()) return;
-    const std::string path = counterexample_path();
-    std::ofstream(path) << poly_text(
-        plc, "shrunk counterexample of RefineProperty.MeshPassesEveryCheckWithGradedSurface\n"
-             "options:" + z.options());
-    RC_LOG() << "options:" << z.options() << "\nwritten to " << path << "\n" << why;
-    RC_FAIL("the mesh of an admissible domain with a graded surface fails");
+    judge_case("RefineProperty.MeshPassesEveryCheckWithGradedSurface", plc, z,
+               "the mesh of an admissible domain with a graded surface fails",
+               [&] { return mesh_failure(plc, z); });
   });
 }
 
