@@ -101,21 +101,30 @@ PolygonSlabs::PolygonSlabs(const std::vector<P2>& poly) {
   if (n == 0) return;
   double lo = poly[0][1], hi = poly[0][1];
   for (const P2& p : poly) lo = std::min(lo, p[1]), hi = std::max(hi, p[1]);
-  slabs_ = static_cast<int>(std::clamp<std::size_t>(n / 2, 1, 1 << 16));
   y0_ = lo;
-  inv_ = hi > lo ? slabs_ / (hi - lo) : 0.0;
-  start_.assign(static_cast<std::size_t>(slabs_) + 1, 0);
   auto range = [&](std::size_t i) {
     const double ya = poly[i][1], yb = poly[(i + 1) % n][1];
     return std::pair{slab(std::min(ya, yb)), slab(std::max(ya, yb))};
   };
+  // About one slab per two edges, halved until the edges' listings number at most 8 per
+  // edge (long edges, as in a comb, span many slabs): memory stays linear in the polygon.
+  for (slabs_ = static_cast<int>(std::clamp<std::size_t>(n / 2, 1, 1 << 16));; slabs_ /= 2) {
+    inv_ = hi > lo ? slabs_ / (hi - lo) : 0.0;
+    std::size_t listed = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto [s0, s1] = range(i);
+      listed += static_cast<std::size_t>(s1 - s0) + 1;
+    }
+    if (slabs_ == 1 || listed <= 8 * n) break;
+  }
+  start_.assign(static_cast<std::size_t>(slabs_) + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const auto [s0, s1] = range(i);
     for (int s = s0; s <= s1; ++s) ++start_[s + 1];
   }
   for (int s = 0; s < slabs_; ++s) start_[s + 1] += start_[s];
   edges_.resize(start_.back());
-  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+  std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
   for (std::size_t i = 0; i < n; ++i) {
     const auto [s0, s1] = range(i);
     for (int s = s0; s <= s1; ++s) edges_[fill[s]++] = static_cast<std::uint32_t>(i);
@@ -136,13 +145,19 @@ Where PolygonSlabs::locate(const std::vector<P2>& poly, const Q2& q) const {
   const Interval sum = isum(q.y, q.n);
   if (!sum.finite()) return locate_in_polygon(poly, q);
   const int s0 = slab(interval_detail::down(sum.lo / q.n)), s1 = slab(interval_detail::up(sum.hi / q.n));
-  if (s0 != s1) return locate_in_polygon(poly, q);
+  // q.y within a few ulps of a slab boundary (vertices of an axis-aligned dyadic facet):
+  // the slabs around it, each edge once (in the first of them it is listed in).
+  if (s1 - s0 > 2) return locate_in_polygon(poly, q);
   bool inside = false;
   const std::size_t n = poly.size();
-  for (std::uint32_t k = start_[s0]; k < start_[s0 + 1]; ++k) {
-    const std::uint32_t i = edges_[k];
-    if (edge_step(poly[i], poly[(i + 1) % n], q, inside)) return Where::Boundary;
-  }
+  for (int s = s0; s <= s1; ++s)
+    for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
+      const std::uint32_t i = edges_[k];
+      const P2& a = poly[i];
+      const P2& b = poly[(i + 1) % n];
+      if (s > s0 && slab(std::min(a[1], b[1])) < s) continue;  // listed in slab s - 1 too
+      if (edge_step(a, b, q, inside)) return Where::Boundary;
+    }
   return inside ? Where::Inside : Where::Outside;
 }
 

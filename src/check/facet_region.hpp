@@ -19,6 +19,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -47,12 +48,14 @@ class PolygonSlabs {
  public:
   explicit PolygonSlabs(const std::vector<P2>& polygon);
   Where locate(const std::vector<P2>& polygon, const Q2& q) const;
+  std::size_t listings() const { return edges_.size(); }  // at most 8 per edge
 
  private:
   int slab(double y) const;
   double y0_ = 0, inv_ = 0;
   int slabs_ = 1;
-  std::vector<std::uint32_t> start_{0, 0}, edges_;
+  std::vector<std::size_t> start_{0, 0};
+  std::vector<std::uint32_t> edges_;
 };
 // Twice the signed area of a polygon (shoelace), exact.
 mpq_class area2(const std::vector<P2>& polygon);

@@ -90,18 +90,19 @@ void PointGrid::build(std::span<const Point> points, const Box& extent, std::uin
   nodes_.push_back({frame, static_cast<std::uint32_t>(first)});
   begin_.resize(first + cells + 1, 0);
   child_.resize(first + cells + 1, -1);
-  std::vector<std::uint32_t> cell(e - b), count(cells + 1, 0);
-  for (std::uint32_t s = b; s < e; ++s) {
-    cell[s - b] = static_cast<std::uint32_t>(frame.index(frame.cell_of(points[ids_[s]])));
-    ++count[cell[s - b] + 1];
-  }
-  for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
-  std::vector<std::uint32_t> sorted(e - b);
-  {
+  std::vector<std::uint32_t> count(cells + 1, 0);
+  {  // the temporaries end before the nested nodes are built
+    std::vector<std::uint32_t> cell(e - b);
+    for (std::uint32_t s = b; s < e; ++s) {
+      cell[s - b] = static_cast<std::uint32_t>(frame.index(frame.cell_of(points[ids_[s]])));
+      ++count[cell[s - b] + 1];
+    }
+    for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
+    std::vector<std::uint32_t> sorted(e - b);
     std::vector<std::uint32_t> fill(count.begin(), count.end() - 1);
     for (std::uint32_t s = b; s < e; ++s) sorted[fill[cell[s - b]]++] = ids_[s];
+    std::copy(sorted.begin(), sorted.end(), ids_.begin() + b);
   }
-  std::copy(sorted.begin(), sorted.end(), ids_.begin() + b);
   for (std::size_t c = 0; c <= cells; ++c) begin_[first + c] = b + count[c];
   if (depth >= kMaxDepth) return;
   for (std::size_t c = 0; c < cells; ++c) {
@@ -122,7 +123,8 @@ void PointGrid::build(std::span<const Point> points, const Box& extent, std::uin
 
 namespace grid_detail {
 
-Buckets bucket(const GridFrame& frame, std::span<const Box> boxes, std::span<const std::uint32_t> ids) {
+Buckets bucket(const GridFrame& frame, std::span<const Box> boxes, std::span<const std::uint32_t> ids,
+               bool separating) {
   Buckets out;
   out.start.assign(frame.size() + 1, 0);
   auto each_cell = [&](const Box& b, auto&& f) {
@@ -132,6 +134,15 @@ Buckets bucket(const GridFrame& frame, std::span<const Box> boxes, std::span<con
         for (int i = a[0]; i <= z[0]; ++i) f(frame.index(i, j, k));
   };
   for (std::uint32_t t : ids) each_cell(boxes[t], [&](std::size_t c) { ++out.start[c + 1]; });
+  if (separating) {
+    std::size_t total = 0, largest = 0;
+    for (std::size_t c = 1; c < out.start.size(); ++c)
+      total += out.start[c], largest = std::max(largest, out.start[c]);
+    if (largest >= ids.size() || total > 4 * ids.size()) {
+      out.ok = false;
+      return out;
+    }
+  }
   for (std::size_t c = 0; c + 1 < out.start.size(); ++c) out.start[c + 1] += out.start[c];
   out.ids.resize(out.start.back());
   std::vector<std::size_t> fill(out.start.begin(), out.start.end() - 1);

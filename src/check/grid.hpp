@@ -141,12 +141,16 @@ struct BoxPairs {
 
 namespace grid_detail {
 
-// Boxes `ids` bucketed by every cell of `frame` their [lo, hi] meets (CSR).
+// Boxes `ids` bucketed by every cell of `frame` their [lo, hi] meets (CSR). With
+// `separating`, nothing is filled (ok false) when that would list the boxes more than 4
+// times over, or leave one cell holding them all: counted first, filled only then.
 struct Buckets {
+  bool ok = true;
   std::vector<std::size_t> start;
   std::vector<std::uint32_t> ids;
 };
-Buckets bucket(const GridFrame& frame, std::span<const Box> boxes, std::span<const std::uint32_t> ids);
+Buckets bucket(const GridFrame& frame, std::span<const Box> boxes, std::span<const std::uint32_t> ids,
+               bool separating = false);
 
 struct Level {
   GridFrame frame;
@@ -185,13 +189,10 @@ void pairs_in_cell(std::span<const Box> boxes, std::span<const std::uint32_t> in
   if (in.size() > BoxPairs::kSweepBoxes && static_cast<int>(path.size()) <= BoxPairs::kMaxDepth) {
     const Level& here = path.back();
     const GridFrame sub(here.frame.region(here.cell), static_cast<double>(in.size()) / per_cell);
-    const Buckets b = bucket(sub, boxes, in);
-    std::size_t largest = 0;
-    for (std::size_t c = 0; c + 1 < b.start.size(); ++c)
-      largest = std::max(largest, b.start[c + 1] - b.start[c]);
     // Nest only where it separates the boxes (not where they all share a point) and does
     // not multiply them by straddling.
-    if (largest < in.size() && b.ids.size() <= 4 * in.size()) {
+    const Buckets b = bucket(sub, boxes, in, true);
+    if (b.ok) {
       for (std::size_t c = 0; c + 1 < b.start.size(); ++c) {
         if (b.start[c + 1] - b.start[c] < 2) continue;
         path.push_back({sub, sub.cell_at(c)});
@@ -214,10 +215,10 @@ template <class Loop, class F>
 void for_each_box_pair(std::span<const Box> boxes, double per_cell, Loop&& loop, F&& f) {
   std::vector<std::uint32_t> all;
   all.reserve(boxes.size());
-  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+  for (std::size_t i = 0; i < boxes.size(); ++i)
     if (boxes[i].lo[0] <= boxes[i].hi[0] && boxes[i].lo[1] <= boxes[i].hi[1] &&
         boxes[i].lo[2] <= boxes[i].hi[2])
-      all.push_back(i);
+      all.push_back(static_cast<std::uint32_t>(i));
   if (all.size() < 2) return;
   const GridFrame top(grid_detail::extent_of(boxes, all), static_cast<double>(all.size()) / per_cell);
   const grid_detail::Buckets b = grid_detail::bucket(top, boxes, all);

@@ -172,5 +172,33 @@ RC_GTEST_PROP(FacetRegion, SlabsLocateAsTheFullScan, ()) {
   }
 }
 
+// Combs (long vertical teeth: every edge spans many slabs, so the slab count is halved
+// until the listings stay linear) and axis-aligned dyadic polygons (vertices and edge
+// midpoints exactly on slab boundaries: the query's interval meets two slabs), queried
+// on a dyadic lattice, at vertices, edge midpoints and centroids.
+RC_GTEST_PROP(FacetRegion, SlabsLocateAsTheFullScanOnCombs, ()) {
+  const int teeth = *rc::gen::inRange(1, 120);
+  const double h = std::ldexp(1.0, *rc::gen::inRange(0, 10));  // tooth height
+  std::vector<P2> poly = {{0, 0}, {2.0 * teeth, 0}};
+  for (int k = teeth - 1; k >= 0; --k) {  // along the top, right to left: up and down each tooth
+    poly.push_back({2.0 * k + 2, 1});
+    poly.push_back({2.0 * k + 1.5, h});
+    poly.push_back({2.0 * k + 1, h});
+    poly.push_back({2.0 * k + 1, 1});
+  }
+  const std::size_t n = poly.size();
+  const PolygonSlabs slabs(poly);
+  RC_ASSERT(slabs.listings() <= 8 * n);
+  auto agree = [&](const Q2& q) { RC_ASSERT(slabs.locate(poly, q) == locate_in_polygon(poly, q)); };
+  for (int k = 0; k < 100; ++k) {
+    const auto i = *rc::gen::inRange<std::size_t>(0, n), j = *rc::gen::inRange<std::size_t>(0, n),
+               l = *rc::gen::inRange<std::size_t>(0, n);
+    agree(Q2::at(poly[i]));
+    agree({{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
+    agree(Q2::centroid(poly[i], poly[j], poly[l]));
+    agree(Q2::at({*rc::gen::inRange(-8, 16 * teeth + 8) / 8.0, *rc::gen::inRange(-8, 8 * int(h) + 16) / 8.0}));
+  }
+}
+
 }  // namespace
 }  // namespace pdr::check::test
