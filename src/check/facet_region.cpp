@@ -172,7 +172,7 @@ FacetRegion::FacetRegion(std::vector<std::vector<P2>> polygons, const std::vecto
       if (i == j) continue;
       bool in = false, out = false;
       for (const P2& v : polygons_[j]) {
-        const Where w = locate_in_polygon(polygons_[i], Q2::at(v));
+        const Where w = slabs_[i].locate(polygons_[i], Q2::at(v));
         in = in || w == Where::Inside;
         out = out || w == Where::Outside;
       }
