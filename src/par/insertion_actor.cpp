@@ -81,7 +81,8 @@ bool InsertionActor::step() {
       },
       16);
   worked_ = got > 0;
-  const double polling = since(p0) - handled;
+  const auto w0 = Clock::now();  // the poll's end, and the work's start
+  const double polling = std::chrono::duration<double>(w0 - p0).count() - handled;
   stats_.poll_s += polling;
   if (got == 0 && !idle() && !waiting()) stats_.poll_excess_s += polling;
   for (std::size_t i = 0; i < delayed_.size();)
@@ -92,43 +93,49 @@ bool InsertionActor::step() {
     } else {
       ++i;
     }
-  const auto w0 = Clock::now();
+  // Queued tets that have left by their turn (most of a commit's new bad tets: a later
+  // commit or a migration took them) are dropped in the same step, up to kDropsPerStep,
+  // without a poll and a clock reading for each.
+  constexpr int kDropsPerStep = 64;
   if (active_ && again_) {
     again_ = false;
     round();
     worked_ = true;
     charge_search(since(w0));
   } else if (!active_ && !ready_.empty()) {
-    const Waiting w = ready_.front();
-    ready_.pop_front();
     worked_ = true;
-    if (!start(w)) ++stats_.gone;
+    for (int n = 0; n < kDropsPerStep && !ready_.empty(); ++n) {
+      const Waiting w = ready_.front();
+      ready_.pop_front();
+      if (start(w)) break;
+      ++stats_.gone;
+    }
     if (active_ || end_ != End::None)
       charge_search(since(w0));
     else
-      stats_.other_s += since(w0);  // a tet gone, a point passed on
+      stats_.other_s += since(w0);  // tets gone, a point passed on
   } else if (active_ && !again_ && !ready_.empty()) {  // waiting for replies: local steps
-    const Waiting w = ready_.front();
-    ready_.pop_front();
     worked_ = true;
-    local_step(w);
+    for (int n = 0; n < kDropsPerStep && !ready_.empty(); ++n) {
+      const Waiting w = ready_.front();
+      ready_.pop_front();
+      if (local_step(w)) break;
+      ++stats_.gone;
+    }
     stats_.masked_local_s += since(w0);
   }
   if (worked_) td_.activity();
   return td_.step(idle());
 }
 
-void InsertionActor::local_step(const Waiting& w) {
+bool InsertionActor::local_step(const Waiting& w) {
   const TetId t = w.tet == kNoGid ? kNoTet : sub_.find_tet(w.tet);
-  if (w.tet != kNoGid && (t == kNoTet || sub_.deferred(t))) {
-    ++stats_.gone;
-    return;
-  }
+  if (w.tet != kNoGid && (t == kNoTet || sub_.deferred(t))) return false;
   // A given point, the search's own tet, or a step parked before (it needed other ranks:
   // trying it again at every wait would rebuild its cavity for nothing).
   if (t == kNoTet || w.parked || locked_.count(t) != 0) {
     parked_.push_back(w);
-    return;
+    return true;
   }
   const RootCavity rc = search_.root_cavity(sub_, rules_->point(sub_, t), t);
   const auto locked = [&](TetId u) { return locked_.count(u) != 0; };
@@ -137,9 +144,10 @@ void InsertionActor::local_step(const Waiting& w) {
       std::any_of(rc.cavity.ring.begin(), rc.cavity.ring.end(), locked)) {
     parked_.push_back(w);
     parked_.back().parked = rc.kind != RootCavity::Kind::Complete;  // it needs other ranks
-    return;
+    return true;
   }
   if (complete(rc.cavity, w.tet)) ++stats_.local_while_waiting;
+  return true;
 }
 
 bool InsertionActor::complete(const Cavity& c, Gid tet) {

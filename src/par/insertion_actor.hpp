@@ -131,8 +131,8 @@ class InsertionActor {
   bool start(Waiting w);  // false: a tet that has left
   // Refinement, while the search waits for replies: the step of w's tet when its cavity
   // is complete here and touches no locked tet (latency hiding); otherwise w is parked
-  // until the search ends.
-  void local_step(const Waiting& w);
+  // until the search ends. False: w's tet has left (nothing done).
+  bool local_step(const Waiting& w);
   // A complete cavity at this rank: the rules accept it (commit, queue the new tets they
   // want) or defer it (mark the tet `tet`).
   bool complete(const Cavity& c, Gid tet);  // true: committed
