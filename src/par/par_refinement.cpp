@@ -31,7 +31,7 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
     actors.push_back(std::make_unique<InsertionActor>(
         port,
         Submesh::extract(static_cast<ActorId>(k), m0.dt.store(), m0.dt.points(), m0.inside,
-                         part),
+                         part, rules.vertex_tags()),
         seed, &rules));
   }
   RankResult out;

@@ -9,6 +9,13 @@
 
 namespace pdr::par {
 
+RefinementRules::RefinementRules(const refine::VolumeMesh& m0, const refine::TetBounds& bounds)
+    : m0_(m0), n0_(m0.dt.num_points()), bounds_(bounds) {
+  tags_.reserve(m0.dt.num_points());
+  for (VertexId v = 0; v < m0.dt.num_points(); ++v)
+    tags_.push_back(static_cast<std::uint8_t>(1 + static_cast<int>(m0.vertex_class(v))));
+}
+
 bool RefinementRules::wants(const Submesh& s, TetId t) const {
   const TetStore& st = s.store();
   const auto pts = s.points();
@@ -23,6 +30,7 @@ Point RefinementRules::point(const Submesh& s, TetId t) const {
 }
 
 refine::MaybeId RefinementRules::subsegment(const Submesh& s, VertexId a, VertexId b) const {
+  if (!may_be(s.tag(a), kSegment) || !may_be(s.tag(b), kSegment)) return {};
   const VertexId ga = m0_vertex(s, a), gb = m0_vertex(s, b);
   if (ga == kNoVertex || gb == kNoVertex) return {};
   return m0_.subsegment(ga, gb);
@@ -30,6 +38,7 @@ refine::MaybeId RefinementRules::subsegment(const Submesh& s, VertexId a, Vertex
 
 refine::MaybeId RefinementRules::subfacet(const Submesh& s, VertexId a, VertexId b,
                                           VertexId c) const {
+  if (s.tag(a) == kInterior || s.tag(b) == kInterior || s.tag(c) == kInterior) return {};
   const VertexId ga = m0_vertex(s, a), gb = m0_vertex(s, b), gc = m0_vertex(s, c);
   if (ga == kNoVertex || gb == kNoVertex || gc == kNoVertex) return {};
   return m0_.subfacet(ga, gb, gc);
@@ -40,8 +49,9 @@ refine::MaybeId RefinementRules::subfacet(const Submesh& s, VertexId a, VertexId
 bool RefinementRules::encroaches(const Submesh& s, TetId t, const Point& p) {
   const TetStore& st = s.store();
   if (st.is_ghost(t) || st.is_proxy(t)) return false;
-  const auto pts = s.points();
   const VertexId* v = st.vertices(t);
+  if (!may_touch_d(s, v)) return false;
+  const auto pts = s.points();
   for (const auto& e : tables::kEdgeVertex)
     if (subsegment(s, v[e[0]], v[e[1]]) &&
         in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative) {
@@ -69,6 +79,7 @@ bool RefinementRules::accept(const Submesh& s, const Cavity& c) {
     // A subfacet face of a conflict tet survives only on the boundary (between two inside
     // tets it cannot be, the flag changing across subfacets; checked all the same).
     const VertexId* v = st.vertices(t);
+    if (!may_touch_d(s, v)) continue;
     for (int f = 0; f < 4; ++f) {
       const auto& fv = tables::kFaceVertex[f];
       if (subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]) &&
@@ -84,6 +95,7 @@ bool RefinementRules::accept(const Submesh& s, const Cavity& c) {
   kept_.clear();
   for (const TetId t : c.conflict) {
     const VertexId* v = st.vertices(t);
+    if (!may_touch_d(s, v)) continue;
     for (const auto& e : tables::kEdgeVertex) {
       if (!subsegment(s, v[e[0]], v[e[1]])) continue;
       if (kept_.empty()) {

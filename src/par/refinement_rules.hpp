@@ -24,6 +24,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "par/step_rules.hpp"
@@ -42,8 +43,7 @@ struct DeferCounts {
 class RefinementRules final : public StepRules {
  public:
   // m0: the mesh that was partitioned (its D and its vertex ids); it must outlive this.
-  RefinementRules(const refine::VolumeMesh& m0, const refine::TetBounds& bounds)
-      : m0_(m0), n0_(m0.dt.num_points()), bounds_(bounds) {}
+  RefinementRules(const refine::VolumeMesh& m0, const refine::TetBounds& bounds);
 
   bool wants(const Submesh& s, TetId t) const override;
   Point point(const Submesh& s, TetId t) const override;
@@ -51,19 +51,39 @@ class RefinementRules final : public StepRules {
 
   const DeferCounts& deferred() const { return deferred_; }
 
+  // The tags to extract the submeshes with (Submesh::extract): 1 + M_o's vertex class
+  // (refine::VertexClass). A vertex with tag 0 (none given, or made in the parallel
+  // phase) is looked up in D like any other.
+  std::span<const std::uint8_t> vertex_tags() const { return tags_; }
+
+  // D as seen from submesh s (vertices local to s): the subsegment {a, b}, the subfacet
+  // {a, b, c}; both filter by the vertices' tags first, then look D up in M_o.
+  refine::MaybeId subsegment(const Submesh& s, VertexId a, VertexId b) const;
+  refine::MaybeId subfacet(const Submesh& s, VertexId a, VertexId b, VertexId c) const;
+  // False: no edge of the tet with vertices v (of s) is a subsegment and no face a
+  // subfacet, since at most one of its vertices may lie on ∂Ω (most tets).
+  static bool may_touch_d(const Submesh& s, const VertexId* v) {
+    int n = 0;
+    for (int i = 0; i < 4; ++i) n += s.tag(v[i]) != kInterior;
+    return n >= 2;
+  }
+
  private:
   // M_o's vertex id of local vertex v, or kNoVertex for a vertex made later (off ∂Ω).
   VertexId m0_vertex(const Submesh& s, VertexId v) const {
     const Gid g = s.gid(v);
     return g < n0_ ? static_cast<VertexId>(g) : kNoVertex;
   }
-  refine::MaybeId subsegment(const Submesh& s, VertexId a, VertexId b) const;
-  refine::MaybeId subfacet(const Submesh& s, VertexId a, VertexId b, VertexId c) const;
   bool encroaches(const Submesh& s, TetId t, const Point& p);
+
+  static constexpr std::uint8_t kInterior = 1 + static_cast<int>(refine::VertexClass::Interior);
+  static constexpr std::uint8_t kSegment = 1 + static_cast<int>(refine::VertexClass::Segment);
+  static bool may_be(std::uint8_t tag, std::uint8_t want) { return tag == 0 || tag == want; }
 
   const refine::VolumeMesh& m0_;
   const Gid n0_;
   const refine::TetBounds bounds_;
+  std::vector<std::uint8_t> tags_;  // per M_o vertex
   DeferCounts deferred_;
   std::vector<std::pair<VertexId, VertexId>> kept_;  // accept(): the boundary's edges
 };

@@ -25,13 +25,14 @@ std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
   return static_cast<std::size_t>(h ^ (h >> 31));
 }
 
-VertexId Submesh::local_vertex(Gid g, const Point* p) {
+VertexId Submesh::local_vertex(Gid g, const Point* p, std::uint8_t tag) {
   if (g == kGhostGid) return kGhostVertex;
   const auto [it, added] = local_.try_emplace(g, static_cast<VertexId>(points_.size()));
   if (added) {
     if (p == nullptr) throw std::logic_error("submesh: vertex " + std::to_string(g) + " unknown");
     points_.push_back(*p);
     gids_.push_back(g);
+    tags_.push_back(tag);
   }
   return it->second;
 }
@@ -105,7 +106,8 @@ void Submesh::claim(TetId proxy, const Claim& c) {
 }
 
 Submesh Submesh::extract(ActorId k, const TetStore& s, std::span<const Point> pts,
-                         std::span<const std::uint8_t> inside, const Partition& p) {
+                         std::span<const std::uint8_t> inside, const Partition& p,
+                         std::span<const std::uint8_t> tags) {
   Submesh m(k);
   std::vector<TetId> local(s.slots(), kNoTet);
   std::vector<TetId> mine;
@@ -114,7 +116,8 @@ Submesh Submesh::extract(ActorId k, const TetStore& s, std::span<const Point> pt
     VertexId v[4];
     for (int i = 0; i < 4; ++i) {
       const VertexId g = s.vertex(t, i);
-      v[i] = g == kGhostVertex ? kGhostVertex : m.local_vertex(g, &pts[g]);
+      v[i] = g == kGhostVertex ? kGhostVertex
+                               : m.local_vertex(g, &pts[g], g < tags.size() ? tags[g] : 0);
     }
     local[t] = m.store_.create(v[0], v[1], v[2], v[3]);
     mine.push_back(t);
@@ -151,7 +154,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
     for (int i = 0; i < 4; ++i) {
       const VertexId v = store_.vertex(t, i);
       r.v[static_cast<std::size_t>(i)] = gid(v);
-      if (v != kGhostVertex && seen.insert(v).second) m.vertices.push_back({gid(v), points_[v]});
+      if (v != kGhostVertex && seen.insert(v).second) m.vertices.push_back({gid(v), points_[v], tags_[v]});
     }
     r.inside = inside_[t];
     for (int f = 0; f < 4; ++f) {
@@ -189,7 +192,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
 
 std::vector<TetId> Submesh::give(const Migration& m) {
   if (m.to != id_) throw std::logic_error("submesh: a migration for another submesh");
-  for (const VertexRecord& v : m.vertices) local_vertex(v.gid, &v.p);
+  for (const VertexRecord& v : m.vertices) local_vertex(v.gid, &v.p, v.tag);
   std::vector<TetId> ids;
   ids.reserve(m.tets.size());
   for (const TetRecord& r : m.tets) {

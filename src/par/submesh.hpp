@@ -87,6 +87,7 @@ struct TetRecord {
 struct VertexRecord {
   Gid gid = 0;
   Point p{};
+  std::uint8_t tag = 0;  // Submesh::tag()
 };
 
 struct Migration {
@@ -111,14 +112,21 @@ class Submesh {
   explicit Submesh(ActorId id) : id_(id) {}
 
   // Submesh k of a partition of (s, pts): its tets (ghosts included), with proxies on the
-  // faces towards the other parts. Vertex v of pts gets global id v, tet t global id t.
+  // faces towards the other parts. Vertex v of pts gets global id v and tag tags[v] (0
+  // when tags is shorter), tet t global id t.
   static Submesh extract(ActorId k, const TetStore& s, std::span<const Point> pts,
-                         std::span<const std::uint8_t> inside, const Partition& p);
+                         std::span<const std::uint8_t> inside, const Partition& p,
+                         std::span<const std::uint8_t> tags = {});
 
   ActorId id() const { return id_; }
   const TetStore& store() const { return store_; }
   std::span<const Point> points() const { return points_; }
   Gid gid(VertexId v) const { return v == kGhostVertex ? kGhostGid : gids_[v]; }
+  // A byte per vertex that the submesh does not read: given to M_o's vertices by
+  // extract(), it travels with the vertex; a vertex made by insert() has tag 0 (the
+  // refinement: where the vertex lies on ∂Ω, so that most edges and faces are known to be
+  // no element of D without a lookup, par/refinement_rules.hpp). 0 for the ghost.
+  std::uint8_t tag(VertexId v) const { return v < tags_.size() ? tags_[v] : 0; }
   Gid tet_gid(TetId t) const { return tet_gid_[t]; }
   // The real tet with global id g, or kNoTet when it is not here.
   TetId find_tet(Gid g) const;
@@ -162,7 +170,8 @@ class Submesh {
   std::vector<std::string> check() const;
 
  private:
-  VertexId local_vertex(Gid g, const Point* p);  // adds the vertex if new (p given)
+  // Adds the vertex if new (p given, with its tag).
+  VertexId local_vertex(Gid g, const Point* p, std::uint8_t tag = 0);
   FaceKey key_of(TetId t, int f) const;
   TetId add_proxy(TetId t, int f, const Side& side);  // glued to face f of real tet t
   void drop_proxy(TetId proxy);
@@ -177,6 +186,7 @@ class Submesh {
   TetStore store_;
   std::vector<Point> points_;
   std::vector<Gid> gids_;
+  std::vector<std::uint8_t> tags_;
   std::unordered_map<Gid, VertexId> local_;
   std::vector<std::uint8_t> inside_;      // per slot
   std::vector<Gid> tet_gid_;              // per slot

@@ -9,12 +9,15 @@
 //     rules defer (checked on the whole mesh with the same rules);
 //   - the sequential completion then ends in a mesh the exact checker passes: valid,
 //     Delaunay, conforming, ratio < 2.
+// And the rules decide alike with and without the vertex tags that spare them most
+// lookups in D.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <memory>
 
 #include "check/check.hpp"
+#include "mesh/tables.hpp"
 #include "delaunay/export.hpp"
 #include "par/insertion_actor.hpp"
 #include "par/par_meshes.hpp"
@@ -56,7 +59,8 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
     rules.push_back(std::make_unique<RefinementRules>(m0, bounds));
     actors.push_back(std::make_unique<InsertionActor>(
         net.endpoint(r),
-        Submesh::extract(static_cast<ActorId>(r), m0.dt.store(), m0.dt.points(), m0.inside, part),
+        Submesh::extract(static_cast<ActorId>(r), m0.dt.store(), m0.dt.points(), m0.inside, part,
+                         rules.back()->vertex_tags()),
         seed, rules.back().get()));
     actors.back()->add_wanted_tets();
   }
@@ -144,6 +148,72 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     for (const auto& ch : report.checks)
       EXPECT_NE(ch.status, check::Status::Fail) << "seed " << seed << ": " << ch.id;
   }
+}
+
+// The tags only skip lookups that would find nothing: on every bad tet of a mesh whose
+// boundary layer is refined, accept() says the same, for the same reason, with and without
+// them.
+TEST(ParRefinement, VertexTagsChangeNoDecision) {
+  const refine::VolumeMesh& m = test::cube_in_cube();
+  const TetStore& s = m.dt.store();
+  const refine::TetBounds bounds{2.0, std::nullopt, kTargetVolume};
+  RefinementRules tagged(m, bounds), plain(m, bounds);
+  const Partition whole = partition_tets(s, m.inside, 1, 1);
+  const Submesh with = Submesh::extract(0, s, m.dt.points(), m.inside, whole, tagged.vertex_tags());
+  const Submesh without = Submesh::extract(0, s, m.dt.points(), m.inside, whole);
+  // Element by element: the same lookups, and a tet the filter passes over has none.
+  std::size_t skipped = 0, in_d = 0;
+  for (TetId t = 0; t < with.store().slots(); ++t) {
+    const TetStore& os = with.store();
+    if (!os.is_alive(t) || os.is_ghost(t) || os.is_proxy(t)) continue;
+    const VertexId* v = os.vertices(t);
+    bool touches = false;
+    for (const auto& e : tables::kEdgeVertex) {
+      const refine::MaybeId a = tagged.subsegment(with, v[e[0]], v[e[1]]);
+      ASSERT_EQ(a, plain.subsegment(without, v[e[0]], v[e[1]])) << "tet " << t;
+      touches = touches || a;
+    }
+    for (const auto& f : tables::kFaceVertex) {
+      const refine::MaybeId a = tagged.subfacet(with, v[f[0]], v[f[1]], v[f[2]]);
+      ASSERT_EQ(a, plain.subfacet(without, v[f[0]], v[f[1]], v[f[2]])) << "tet " << t;
+      touches = touches || a;
+    }
+    if (!RefinementRules::may_touch_d(with, v)) {
+      ++skipped;
+      EXPECT_FALSE(touches) << "tet " << t << " has an element of D but is passed over";
+    }
+    in_d += touches;
+  }
+  EXPECT_GT(skipped, 1000u);
+  EXPECT_GT(in_d, 100u);
+  Cavity c;
+  CavityBuilder builder;
+  std::size_t accepted = 0, refused = 0;
+  for (TetId t = 0; t < with.store().slots(); ++t) {
+    const TetStore& os = with.store();
+    if (!os.is_alive(t) || os.is_ghost(t) || os.is_proxy(t) || !with.inside(t)) continue;
+    ASSERT_EQ(tagged.wants(with, t), plain.wants(without, t));
+    if (!tagged.wants(with, t)) continue;
+    const Point p = tagged.point(with, t);
+    WalkRng rng;
+    const Location loc = locate(os, with.points(), p, t, rng);
+    if (loc.kind == Location::Kind::OnVertex) continue;
+    builder.build(os, with.points(), p, loc.tet, c);  // the stores are alike slot by slot
+    const bool a = tagged.accept(with, c), b = plain.accept(without, c);
+    ASSERT_EQ(a, b) << "tet " << t;
+    (a ? accepted : refused) += 1;
+  }
+  const DeferCounts &x = tagged.deferred(), &y = plain.deferred();
+  EXPECT_EQ(x.outside, y.outside);
+  EXPECT_EQ(x.subsegment, y.subsegment);
+  EXPECT_EQ(x.subfacet, y.subfacet);
+  EXPECT_EQ(x.removed, y.removed);
+  // Not vacuous: both outcomes, and refusals by D.
+  EXPECT_GT(accepted, 100u);
+  EXPECT_GT(x.subsegment + x.subfacet + x.removed, 10u);
+  std::printf("%zu accepted, %zu refused (%llu subsegment, %llu subfacet, %llu removed)\n",
+              accepted, refused, static_cast<unsigned long long>(x.subsegment),
+              static_cast<unsigned long long>(x.subfacet), static_cast<unsigned long long>(x.removed));
 }
 
 }  // namespace
