@@ -188,11 +188,15 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   timer.lap("initial");
   progress.phase("refine");
   double t_before = 0;  // parallel runs: the phases before rank 0's completion
-  VertexOwners owners;  // parallel runs: who made each vertex (PREFIX.pvtu)
+  // Parallel runs with vtu output: who made each vertex (PREFIX.pvtu).
+  const bool partitioned = world().size > 1 && !args.prefix.empty() &&
+                           std::find(formats.begin(), formats.end(), io::MeshFormat::Vtu) !=
+                               formats.end();
+  VertexOwners owners;
   std::optional<refine::RefineResult> refined =
       world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.submeshes,
-                                            args.inject_latency_us,
-                                            args.seed, summary, timer, t_before, owners)
+                                            args.inject_latency_us, args.seed, summary, timer,
+                                            t_before, partitioned ? &owners : nullptr)
                        : refine::refine(vm, opt);
   if (!refined) return kExitOk;  // not rank 0: rank 0 writes, checks and decides the code
   const refine::RefineResult& rr = *refined;
@@ -262,8 +266,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     progress.phase("write");
     write_outputs(mesh, args.prefix, formats, timer, summary);
   }
-  if (!args.prefix.empty() && world().size > 1 &&
-      std::find(formats.begin(), formats.end(), io::MeshFormat::Vtu) != formats.end()) {
+  if (partitioned) {
     // One piece per rank, the owner as a cell field (app/partitioned_output.hpp).
     nlohmann::json written = summary.get("written");
     for (const std::string& p : write_partitioned_vtu(mesh, tet_owners(mesh, owners), owners.parts, args.prefix))

@@ -151,7 +151,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,
-                                                       VertexOwners& owners) {
+                                                       VertexOwners* owners) {
   const World w = world();
   // M_o: the same on every rank.
   const refine::RefineResult coarse =
@@ -210,21 +210,24 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     }
   }
   if (w.rank != 0) return std::nullopt;
-  owners.parts = w.size;
-  if (distribute) {
-    std::size_t next = 0;
-    for (std::size_t r = 0; r < figures.size(); ++r)
-      for (std::uint64_t i = 0; i < figures[r].points && next < points.size(); ++i)
-        owners.committed.emplace(points[next++], static_cast<std::uint32_t>(r));
-    const TetStore& s = vm.dt.store();
-    for (TetId t = 0; t < part.part.size(); ++t) {
-      if (part.part[t] == par::kNoPart || s.vertex(t, 3) >= kFirstSpecialVertex) continue;  // ghosts too
-      for (int k = 0; k < 4; ++k) {
-        const std::uint32_t rank = part.part[t] % static_cast<std::uint32_t>(w.size);
-        const auto [it, fresh] = owners.initial.emplace(vm.dt.point(s.vertex(t, k)), rank);
-        if (!fresh) it->second = std::min(it->second, rank);
+  if (owners != nullptr) {
+    owners->parts = w.size;
+    if (distribute) {
+      std::size_t next = 0;
+      for (std::size_t r = 0; r < figures.size(); ++r)
+        for (std::uint64_t i = 0; i < figures[r].points && next < points.size(); ++i)
+          owners->committed.emplace(points[next++], static_cast<std::uint32_t>(r));
+      const TetStore& s = vm.dt.store();
+      for (TetId t = 0; t < part.part.size(); ++t) {
+        if (part.part[t] == par::kNoPart || s.vertex(t, 3) >= kFirstSpecialVertex) continue;  // ghosts too
+        for (int k = 0; k < 4; ++k) {
+          const std::uint32_t rank = part.part[t] % static_cast<std::uint32_t>(w.size);
+          const auto [it, fresh] = owners->initial.emplace(vm.dt.point(s.vertex(t, k)), rank);
+          if (!fresh) it->second = std::min(it->second, rank);
+        }
       }
     }
+    seconds += timer.lap("owners");
   }
   const std::size_t added = par::absorb(vm, points);
   seconds += timer.lap("absorb");

@@ -49,8 +49,8 @@ class RunAbandoned : public std::runtime_error {
 // stderr; elsewhere nullopt (rank 0 finishes the run). `seconds` gets the wall time of the
 // phases before the completion (coarse, parallel, gather, absorb). `latency_us` > 0: every
 // message of the parallel phase is held that long before it is delivered. `submeshes`
-// N >= P (0: P) parts of M_o, submesh k on rank k mod P (par/actor_mux.hpp). `owners` gets,
-// on rank 0, who made each vertex (app/partitioned_output.hpp).
+// N >= P (0: P) parts of M_o, submesh k on rank k mod P (par/actor_mux.hpp). `owners`
+// (when given) gets, on rank 0, who made each vertex (app/partitioned_output.hpp).
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
@@ -58,7 +58,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,
-                                                       VertexOwners& owners);
+                                                       VertexOwners* owners);
 
 // The exit code of the run, on every rank (`code` without mpirun): the code the checkpoint
 // fixed; else, past the checkpoint, rank 0's; else (no checkpoint yet: a command without
