@@ -23,7 +23,7 @@
 // sequential command, np = 1 and np = 2 (each with --json, its summary read from its log),
 // and TetGen; prints wall times, the speed-ups np = 1 / sequential and np = 2 / np = 1
 // against the targets (np = 1 at most 1.15x the sequential time, np = 2 at least 1.6x
-// faster than np = 1), the np = 2 run's phases (coarse M_o, parallel phase, absorption,
+// faster than np = 1), the np = 2 run's phases (coarse M_o, parallel phase, assembly,
 // completion) and, per rank, busy / phase seconds (the share of the parallel phase in
 // which the rank worked rather than waited).
 #include <sys/resource.h>

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "par/assembly.hpp"
 #include "par/mpi_collect.hpp"
 #include "par/mpi_transport.hpp"
 #include "par/par_refinement.hpp"
@@ -165,7 +166,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // A coarse run that stopped at its cap, or left D out of T, is not a mesh to distribute:
   // every rank then leaves the whole refinement to rank 0.
   bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
-  std::vector<Point> points;
+  std::vector<Point> points;  // for `owners`
+  std::vector<std::byte> pieces;
   std::vector<par::RankFigures> figures;
   par::Partition part;
   // More submeshes than M_o can give (METIS would leave one empty): one per rank instead;
@@ -200,7 +202,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         }
       }
       seconds += timer.lap("parallel");
-      points = par::gather_points(mine.points);
+      if (owners != nullptr) points = par::gather_points(mine.points);
+      pieces = par::gather_bytes(mine.pieces);
       figures = par::gather_figures(mine.figures);
       seconds += timer.lap("gather");
     } catch (const std::exception& e) {
@@ -229,8 +232,18 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     }
     seconds += timer.lap("owners");
   }
-  const std::size_t added = par::absorb(vm, points);
-  seconds += timer.lap("absorb");
+  // The whole mesh from the submeshes' tets, in place of M_o (par/assembly.hpp).
+  std::size_t added = 0;
+  if (distribute) {
+    std::vector<par::Piece> all;
+    par::WireReader r(pieces);
+    while (!r.done()) all.push_back(par::get_piece(r));
+    std::vector<std::byte>().swap(pieces);
+    added = par::assemble(vm, all);
+  }
+  seconds += timer.lap("assemble");
+  std::uint64_t committed = 0;
+  for (const par::RankFigures& f : figures) committed += f.points;
   nlohmann::json ranks = nlohmann::json::array();
   double slowest = 0;
   for (std::size_t r = 0; r < figures.size(); ++r) {
@@ -249,7 +262,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                          {"distributed", distribute},
                                          {"partition_note", partition_note},
                                          {"initial_tets", m0_tets},
-                                         {"points", points.size()},
+                                         {"points", committed},
                                          {"points_absorbed", added},
                                          {"slowest_rank_seconds", slowest},
                                          {"per_rank", ranks}});

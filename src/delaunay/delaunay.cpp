@@ -105,4 +105,15 @@ InsertResult Delaunay::insert(VertexId v, TetId hint) {
   return {Outcome::Inserted, v, commit(cavity_, v)};
 }
 
+void Delaunay::adopt(std::vector<Point> points, TetStore store) {
+  points_ = std::move(points);
+  store_ = std::move(store);
+  last_ = kNoTet;
+  const auto newest = static_cast<VertexId>(points_.size() - 1);
+  for (TetId t = 0; t < store_.slots() && last_ == kNoTet; ++t)
+    if (store_.is_alive(t) && !store_.is_ghost(t))
+      for (int i = 0; i < 4; ++i)
+        if (store_.vertex(t, i) == newest) last_ = t;
+}
+
 }  // namespace pdr

@@ -72,6 +72,11 @@ class Delaunay {
 
   // ---- tets --------------------------------------------------------------------------
   const TetStore& store() const { return store_; }
+  // Replaces the triangulation by `store` over `points`, built elsewhere (the parallel
+  // layer's assembly, par/assembly.hpp). Precondition: they meet the invariants above,
+  // every point a vertex of a finite tet. last_tet() becomes a finite tet of the last
+  // point.
+  void adopt(std::vector<Point> points, TetStore store);
   bool empty() const { return store_.live() == 0; }
   TetId last_tet() const { return last_; }
   std::size_t count_finite_tets() const;

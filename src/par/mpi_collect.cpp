@@ -73,6 +73,10 @@ std::vector<T> gather_values(const std::vector<T>& mine) {
 
 std::vector<Point> gather_points(const std::vector<Point>& mine) { return gather_values(mine); }
 
+std::vector<std::byte> gather_bytes(const std::vector<std::byte>& mine) {
+  return gather_values(mine);
+}
+
 std::vector<RankFigures> gather_figures(const RankFigures& mine) {
   return gather_values(std::vector<RankFigures>{mine});
 }

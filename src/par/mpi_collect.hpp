@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "geom/point.hpp"
@@ -16,6 +17,9 @@ namespace pdr::par {
 
 // Every rank's points, concatenated in rank order, at rank 0 (empty elsewhere).
 std::vector<Point> gather_points(const std::vector<Point>& mine);
+
+// Every rank's bytes, concatenated in rank order, at rank 0 (empty elsewhere).
+std::vector<std::byte> gather_bytes(const std::vector<std::byte>& mine);
 
 // Every rank's figures, in rank order, at rank 0 (empty elsewhere).
 std::vector<RankFigures> gather_figures(const RankFigures& mine);

@@ -1,15 +1,13 @@
-// The parallel phase on one rank and the absorption of its points; see
-// par/par_refinement.hpp.
+// The parallel phase on one rank; see par/par_refinement.hpp.
 #include "par/par_refinement.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <memory>
-#include <numeric>
 #include <optional>
 
-#include "delaunay/spatial_sort.hpp"
 #include "par/actor_mux.hpp"
+#include "par/assembly.hpp"
 #include "par/idle.hpp"
 
 namespace pdr::par {
@@ -58,7 +56,9 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   }
   f.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   f.busy_seconds = std::chrono::duration<double>(busy).count();
+  WireWriter pieces;
   for (const auto& a : actors) {
+    put_piece(pieces, piece_of(a->submesh()));
     f.steps += a->stats();
     f.final_tets += a->submesh().real_tets();
     out.points.insert(out.points.end(), a->committed_points().begin(),
@@ -73,30 +73,8 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   f.empty_polls = idle.empty_iterations();
   f.sleeps = idle.sleeps();
   f.points = out.points.size();
+  out.pieces = pieces.take();
   return out;
-}
-
-std::size_t absorb(refine::VolumeMesh& m, std::span<const Point> points) {
-  if (points.empty()) return 0;
-  std::vector<std::uint32_t> order(points.size());
-  std::iota(order.begin(), order.end(), 0u);
-  Point lo = points[0], hi = points[0];
-  for (const Point& p : points)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  hilbert_sort(order, points, lo, hi);
-  Cavity c;
-  std::vector<TetId> star;
-  std::size_t added = 0;
-  TetId hint = m.dt.last_tet();
-  for (const std::uint32_t i : order) {
-    const Location loc = m.dt.locate(points[i], hint);
-    if (loc.kind == Location::Kind::OnVertex) continue;
-    m.dt.build_cavity(points[i], loc.tet, c);
-    commit_point(m, c, refine::kNone, star);
-    hint = m.dt.last_tet();
-    ++added;
-  }
-  return added;
 }
 
 }  // namespace pdr::par

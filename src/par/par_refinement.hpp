@@ -9,11 +9,11 @@
 // closure locks, setbacks with seeded back-off, termination detection. Steps that would
 // change D (an encroached subsegment or subfacet) or leave Ω are deferred.
 //
-// After termination, rank 0 gathers the points every rank committed (par/mpi_collect.hpp)
-// and absorb() adds them to its M_o: the Delaunay tetrahedralization of a point set is
-// unique (symbolic perturbation), so M_o plus the points is exactly the union of the
-// submeshes, with the same inside flags (every point is off ∂Ω, D has not changed). The
-// sequential refinement (refine/seq_refinement.hpp) then completes the mesh from there.
+// After termination, rank 0 gathers the submeshes' tets (par/mpi_collect.hpp) and
+// assembles them into the whole mesh in place of its M_o (par/assembly.hpp): M_o plus the
+// committed points, with the same inside flags (every point is off ∂Ω, D has not
+// changed). The sequential refinement (refine/seq_refinement.hpp) then completes the mesh
+// from there.
 #pragma once
 
 #include <cstdint>
@@ -41,6 +41,7 @@ struct RankFigures {
 
 struct RankResult {
   std::vector<Point> points;  // the points this rank committed
+  Bytes pieces;               // its submeshes' tets at the end (par/assembly.hpp), in a row
   RankFigures figures;
 };
 
@@ -50,10 +51,5 @@ struct RankResult {
 // the rank's: its actors' summed.
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
                        const refine::TetBounds& bounds, std::uint64_t seed);
-
-// Adds `points` (off ∂Ω, not vertices of m yet) to T, flags their tets (refine/
-// volume_mesh.hpp commit_point), in Hilbert order. Returns how many were new; a point
-// already a vertex is skipped.
-std::size_t absorb(refine::VolumeMesh& m, std::span<const Point> points);
 
 }  // namespace pdr::par

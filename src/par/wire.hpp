@@ -27,8 +27,10 @@ class WireWriter {
   }
   template <class T>
   WireWriter& put_vector(const std::vector<T>& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
     put<std::uint64_t>(v.size());
-    for (const T& x : v) put(x);
+    const auto* p = reinterpret_cast<const std::byte*>(v.data());
+    bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(T));
     return *this;
   }
   Bytes take() { return std::move(bytes_); }
@@ -54,7 +56,8 @@ class WireReader {
     const auto n = get<std::uint64_t>();
     if (n > (b_.size() - pos_) / sizeof(T)) throw std::logic_error("wire: a vector too long");
     std::vector<T> v(static_cast<std::size_t>(n));
-    for (T& x : v) x = get<T>();
+    if (n > 0) std::memcpy(v.data(), b_.data() + pos_, v.size() * sizeof(T));
+    pos_ += v.size() * sizeof(T);
     return v;
   }
   bool done() const { return pos_ == b_.size(); }

@@ -3,8 +3,9 @@
 // RefinementRules, every message delivered in a seeded random order. When termination is
 // detected:
 //   - no message is in flight, every store is valid, no relink notice waits;
-//   - the ranks together hold exactly M_o plus the committed points, as absorb() builds it
-//     (the Delaunay tetrahedralization is unique), with the same inside tets;
+//   - the ranks together hold exactly M_o plus the committed points, as inserting them
+//     builds it (the Delaunay tetrahedralization is unique), with the same inside tets,
+//     and assemble() glues their tets into exactly that mesh, every tet with its flag;
 //   - no work was left behind: every bad inside tet of that mesh is one whose step the
 //     rules defer (checked on the whole mesh with the same rules);
 //   - the sequential completion then ends in a mesh the exact checker passes: valid,
@@ -15,8 +16,12 @@
 
 #include <algorithm>
 #include <memory>
+#include <numeric>
 
 #include "check/check.hpp"
+#include "delaunay/spatial_sort.hpp"
+#include "par/assembly.hpp"
+#include "refine/audit.hpp"
 #include "mesh/tables.hpp"
 #include "delaunay/export.hpp"
 #include "par/insertion_actor.hpp"
@@ -42,7 +47,46 @@ test::PointTet point_tet(const Point& a, const Point& b, const Point& c, const P
   return q;
 }
 
+// The reference for assemble(): inserts `points` into m, in Hilbert order (commit_point
+// flags the new tets: every point is off ∂Ω). Returns how many were new.
+std::size_t absorb(refine::VolumeMesh& m, std::span<const Point> points) {
+  std::vector<std::uint32_t> order(points.size());
+  std::iota(order.begin(), order.end(), 0u);
+  Point lo = m.dt.point(0), hi = lo;
+  for (const Point& p : points)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  hilbert_sort(order, points, lo, hi);
+  Cavity c;
+  std::vector<TetId> star;
+  std::size_t added = 0;
+  for (const std::uint32_t i : order) {
+    const Location loc = m.dt.locate(points[i], m.dt.last_tet());
+    if (loc.kind == Location::Kind::OnVertex) continue;
+    m.dt.build_cavity(points[i], loc.tet, c);
+    commit_point(m, c, refine::kNone, star);
+    ++added;
+  }
+  return added;
+}
+
+// Every tet of m (outside ones and ghosts too), as points, with its flag (ghosts: the
+// three finite points and a zero).
+std::vector<std::pair<test::PointTet, int>> all_tets(const refine::VolumeMesh& m) {
+  std::vector<std::pair<test::PointTet, int>> out;
+  const TetStore& s = m.dt.store();
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t)) continue;
+    const VertexId* v = s.vertices(t);
+    const Point o{0, 0, 0};
+    const auto pt = [&](int i) { return v[i] == kGhostVertex ? o : m.dt.point(v[i]); };
+    out.emplace_back(point_tet(pt(0), pt(1), pt(2), pt(3)), m.is_inside(t) ? 1 : 0);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 struct SimRun {
+  std::vector<Piece> pieces;  // the submeshes' tets at the end
   std::vector<Point> points;
   std::vector<test::PointTet> inside_tets;  // the ranks' inside tets
   InsertionStats stats;
@@ -71,6 +115,7 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
     const auto problems = s.check();
     EXPECT_TRUE(problems.empty()) << "seed " << seed << ": " << problems.front();
     EXPECT_EQ(s.waiting_relinks(), 0u);
+    out.pieces.push_back(piece_of(s));
     out.points.insert(out.points.end(), a->committed_points().begin(), a->committed_points().end());
     const TetStore& st = s.store();
     std::vector<test::PointTet> tets;
@@ -104,7 +149,22 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     const SimRun run = run_sim(m, ranks, seed);
     if (HasFailure()) return;
     EXPECT_GT(run.stats.commits, 100u);
+    // The submeshes' tets assembled (through the wire format) are M_o plus the points,
+    // every tet with its flag: what inserting the points gives.
+    refine::VolumeMesh g = m;
+    WireWriter w;
+    for (const Piece& p : run.pieces) put_piece(w, p);
+    const Bytes bytes = w.take();
+    WireReader r(bytes);
+    std::vector<Piece> back;
+    while (!r.done()) back.push_back(get_piece(r));
+    EXPECT_EQ(assemble(g, back), run.points.size());
     EXPECT_EQ(absorb(m, run.points), run.points.size());
+    EXPECT_TRUE(g.dt.check_topology().empty());
+    EXPECT_TRUE(refine::audit_volume(g).empty());
+    EXPECT_TRUE(all_tets(g) == all_tets(m)) << "seed " << seed << ": assembly differs from insertion";
+    EXPECT_EQ(g.dt.num_points(), m.dt.num_points());
+    EXPECT_EQ(g.vclass.size(), g.dt.num_points());
     // The union of the submeshes is M_o plus the points.
     std::vector<test::PointTet> want;
     const TetStore& s = m.dt.store();

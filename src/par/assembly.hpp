@@ -1,0 +1,62 @@
+// Assembly: the whole mesh at rank 0 from the submeshes' tets after the parallel phase
+// (docs/parallel.md, "Gather and assemble").
+//
+// Every tet of the mesh, ghosts included, is held by exactly one submesh once the phase
+// has terminated (par/submesh.hpp M1), and a face between two submeshes is closed on both
+// sides by proxies naming each other's tets (M2, M3). So the union of the submeshes' real
+// tets is the mesh, glued along the faces inside each submesh (its store's adjacency) and
+// along the proxy faces (by their vertices: a face of the mesh is shared by exactly two
+// tets). A Piece is one submesh's real tets, their vertices and that adjacency; assemble()
+// replaces rank 0's M_o by the union of the pieces. M_o's vertices keep their ids (global
+// id = M_o's vertex id: par/submesh.hpp), so D and its maps stay valid; the vertices made
+// in the phase are appended, off ∂Ω.
+//
+// This is the same mesh that inserting the committed points into M_o gives (the Delaunay
+// tetrahedralization of a point set is unique under the symbolic perturbation, and the
+// inside flags change only across subfacets, which the phase never adds): tested against
+// absorb() tet by tet. It costs a pass over the tets instead of a point location and a
+// cavity per committed point.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "par/submesh.hpp"
+#include "par/wire.hpp"
+#include "refine/volume_mesh.hpp"
+
+namespace pdr::par {
+
+// A tet of a piece: its vertices (indices into Piece::vertices, kGhostVertex for the
+// ghost), in the store's orientation; per face, the tet across as 4 * index + its face
+// index, or kAcrossProxy: in another piece; and its inside flag (bit 0).
+struct PieceTet {
+  std::array<std::uint32_t, 4> v{};
+  std::array<std::uint32_t, 4> across{};
+  std::uint8_t inside = 0;
+};
+inline constexpr std::uint32_t kAcrossProxy = 0xFFFFFFFFu;
+
+struct Piece {
+  std::vector<VertexRecord> vertices;  // those of its tets
+  std::vector<PieceTet> tets;
+};
+
+// Submesh s's real tets (ghosts included, proxies not).
+Piece piece_of(const Submesh& s);
+
+// Appends the piece to w, and reads one back.
+void put_piece(WireWriter& w, const Piece& p);
+Piece get_piece(WireReader& r);
+
+// Replaces m's tets by the union of `pieces` (the submeshes of a partition of m after the
+// parallel phase): m's vertices keep their ids, the pieces' vertices with global ids from
+// m.dt.num_points() on are appended (off ∂Ω: vclass Interior, no D vertex), the inside
+// flags come with the tets. Returns the number of vertices appended. Throws
+// std::logic_error when the pieces do not glue into a closed mesh (a face left open, or
+// met by more than two tets).
+std::size_t assemble(refine::VolumeMesh& m, std::span<const Piece> pieces);
+
+}  // namespace pdr::par
