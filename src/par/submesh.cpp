@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <unordered_set>
 
 #include "mesh/tables.hpp"
 
@@ -27,14 +26,21 @@ std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
 
 VertexId Submesh::local_vertex(Gid g, const Point* p, std::uint8_t tag) {
   if (g == kGhostGid) return kGhostVertex;
-  const auto [it, added] = local_.try_emplace(g, static_cast<VertexId>(points_.size()));
-  if (added) {
+  VertexId* slot = nullptr;
+  if (from_m0(g)) {
+    if (m0_local_.size() <= g) m0_local_.resize(static_cast<std::size_t>(g + g / 2 + 64), kNoVertex);
+    slot = &m0_local_[static_cast<std::size_t>(g)];
+  } else {
+    slot = &local_.try_emplace(g, kNoVertex).first->second;
+  }
+  if (*slot == kNoVertex) {
     if (p == nullptr) throw std::logic_error("submesh: vertex " + std::to_string(g) + " unknown");
+    *slot = static_cast<VertexId>(points_.size());
     points_.push_back(*p);
     gids_.push_back(g);
     tags_.push_back(tag);
   }
-  return it->second;
+  return *slot;
 }
 
 FaceKey Submesh::key_of(TetId t, int f) const {
@@ -49,6 +55,8 @@ void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t insid
     tet_gid_.resize(store_.slots(), kNoGid);
     epoch_.resize(store_.slots(), 0);
     exposed_.resize(store_.slots(), 0);
+    side_.resize(store_.slots());
+    taken_.resize(store_.slots(), 0);
   }
   inside_[t] = inside;
   exposed_[t] = 0;
@@ -58,6 +66,11 @@ void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t insid
 }
 
 void Submesh::index_tet(Gid g, TetId t) {
+  if (from_m0(g)) {
+    if (m0_slot_.size() <= g) m0_slot_.resize(static_cast<std::size_t>(g + g / 2 + 64), kNoTet);
+    m0_slot_[static_cast<std::size_t>(g)] = t;
+    return;
+  }
   if (!made_here(g)) {
     tet_at_[g] = t;
     return;
@@ -68,7 +81,7 @@ void Submesh::index_tet(Gid g, TetId t) {
 }
 
 void Submesh::unindex_tet(Gid g) {
-  if (!made_here(g)) tet_at_.erase(g);
+  if (!made_here(g) && !from_m0(g)) tet_at_.erase(g);
 }
 
 TetId Submesh::find_tet(Gid g) const {
@@ -76,6 +89,8 @@ TetId Submesh::find_tet(Gid g) const {
   if (made_here(g)) {
     const std::size_t serial = static_cast<std::size_t>(g & ((Gid{1} << 40) - 1));
     if (serial < slot_of_serial_.size()) t = slot_of_serial_[serial];
+  } else if (from_m0(g)) {
+    if (g < m0_slot_.size()) t = m0_slot_[static_cast<std::size_t>(g)];
   } else if (const auto it = tet_at_.find(g); it != tet_at_.end()) {
     t = it->second;
   }
@@ -90,18 +105,19 @@ TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
   exposed_[t] = 1;  // the submesh across now names t
   store_.link(half_face(t, f), half_face(p, 3));
   side_[p] = side;
+  ++proxies_;
   proxy_at_[key_of(p, 3)] = p;
   return p;
 }
 
 void Submesh::drop_proxy(TetId proxy) {
   proxy_at_.erase(key_of(proxy, 3));
-  side_.erase(proxy);
+  --proxies_;
   store_.destroy(proxy);
 }
 
 void Submesh::claim(TetId proxy, const Claim& c) {
-  Claim& mine = side_.at(proxy).claim;
+  Claim& mine = side_[proxy].claim;
   if (c.epoch > mine.epoch) mine = c;
 }
 
@@ -136,11 +152,16 @@ Submesh Submesh::extract(ActorId k, const TetStore& s, std::span<const Point> pt
 
 Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Relink>& relinks) {
   if (to == id_) throw std::logic_error("submesh: a migration to itself");
-  const std::unordered_set<TetId> taken(tets.begin(), tets.end());
+  if (++takes_ == 0) {  // the stamps wrapped: start them afresh
+    std::fill(taken_.begin(), taken_.end(), 0);
+    std::fill(seen_.begin(), seen_.end(), 0);
+    takes_ = 1;
+  }
+  for (const TetId t : tets) taken_[t] = takes_;
+  seen_.resize(points_.size(), 0);
   Migration m;
   m.from = id_;
   m.to = to;
-  std::unordered_set<VertexId> seen;
   std::vector<std::pair<TetId, int>> keep_faces;  // kept real tets' faces to close
   std::vector<Side> keep_sides;
   std::vector<TetId> drop;
@@ -154,16 +175,19 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
     for (int i = 0; i < 4; ++i) {
       const VertexId v = store_.vertex(t, i);
       r.v[static_cast<std::size_t>(i)] = gid(v);
-      if (v != kGhostVertex && seen.insert(v).second) m.vertices.push_back({gid(v), points_[v], tags_[v]});
+      if (v != kGhostVertex && seen_[v] != takes_) {
+        seen_[v] = takes_;
+        m.vertices.push_back({gid(v), points_[v], tags_[v]});
+      }
     }
     r.inside = inside_[t];
     for (int f = 0; f < 4; ++f) {
       const TetId u = store_.neighbour(t, f);
       Side& across = r.across[static_cast<std::size_t>(f)];
-      if (taken.count(u) != 0) {
+      if (taken_[u] == takes_) {
         across = Side{tet_gid_[u], Claim{kSameMigration, 0}};
       } else if (store_.is_proxy(u)) {
-        across = side_.at(u);
+        across = side_[u];
         // Tell the submesh believed to hold the tet across. When that is this one (the tet
         // is on its way here), nothing is sent: its arrival finds this move in moved_.
         if (across.claim.holder != id_)
@@ -204,20 +228,14 @@ std::vector<TetId> Submesh::give(const Migration& m) {
     moved_.erase(r.gid);
     ids.push_back(t);
   }
-  std::unordered_map<FaceKey, HalfFace, FaceKeyHash> internal;
+  std::vector<std::pair<FaceKey, HalfFace>> internal;  // faces between two of its tets
   for (std::size_t i = 0; i < m.tets.size(); ++i) {
     const TetId t = ids[i];
     for (int f = 0; f < 4; ++f) {
       const Side& across = m.tets[i].across[static_cast<std::size_t>(f)];
       const FaceKey k = key_of(t, f);
       if (across.claim.holder == kSameMigration) {
-        const auto it = internal.find(k);
-        if (it == internal.end()) {
-          internal.emplace(k, half_face(t, f));
-        } else {
-          store_.link(half_face(t, f), it->second);
-          internal.erase(it);
-        }
+        internal.emplace_back(k, half_face(t, f));
         continue;
       }
       if (const auto it = proxy_at_.find(k); it != proxy_at_.end()) {
@@ -235,8 +253,14 @@ std::vector<TetId> Submesh::give(const Migration& m) {
       if (const auto gone = moved_.find(across.tet); gone != moved_.end()) claim(p, gone->second);
     }
   }
-  if (!internal.empty())
-    throw std::logic_error("submesh: a migration whose internal faces do not pair up");
+  std::sort(internal.begin(), internal.end(),
+            [](const auto& a, const auto& b) { return a.first.v < b.first.v; });
+  for (std::size_t i = 0; i < internal.size(); i += 2) {
+    if (i + 1 == internal.size() || !(internal[i].first == internal[i + 1].first) ||
+        (i + 2 < internal.size() && internal[i + 2].first == internal[i].first))
+      throw std::logic_error("submesh: a migration whose internal faces do not pair up");
+    store_.link(internal[i].second, internal[i + 1].second);
+  }
   for (const TetId t : ids) {
     const auto w = waiting_.find(tet_gid_[t]);
     if (w == waiting_.end()) continue;
@@ -264,7 +288,7 @@ bool Submesh::relink(Relink& r) {
     // and only one that still names the moved tet: after a commit, a new tet may have
     // the same face.
     if (const auto it = proxy_at_.find(r.face);
-        it != proxy_at_.end() && side_.at(it->second).tet == r.tet)
+        it != proxy_at_.end() && side_[it->second].tet == r.tet)
       claim(it->second, r.claim);
     return true;
   }
@@ -296,7 +320,7 @@ std::vector<std::string> Submesh::check() const {
   for (TetId t = 0; t < store_.slots(); ++t) {
     if (!store_.is_alive(t)) continue;
     if (!store_.is_proxy(t)) {
-      if (!made_here(tet_gid_[t])) ++foreign;
+      if (!made_here(tet_gid_[t]) && !from_m0(tet_gid_[t])) ++foreign;
       if (find_tet(tet_gid_[t]) != t)
         out.push_back("submesh.tet-index: tet " + std::to_string(t) + " of submesh " +
                       std::to_string(id_) + " is not indexed by its global id");
@@ -304,14 +328,13 @@ std::vector<std::string> Submesh::check() const {
     }
     ++proxies;
     const auto it = proxy_at_.find(key_of(t, 3));
-    if (side_.count(t) == 0 || it == proxy_at_.end() || it->second != t)
+    if (it == proxy_at_.end() || it->second != t)
       out.push_back("submesh.proxy-index: proxy " + std::to_string(t) + " of submesh " +
                     std::to_string(id_) + " is not indexed by its face");
   }
-  if (proxies != side_.size() || proxies != proxy_at_.size() ||
-      foreign != tet_at_.size())
+  if (proxies != proxies_ || proxies != proxy_at_.size() || foreign != tet_at_.size())
     out.push_back("submesh.index: " + std::to_string(proxies) + " proxies, " +
-                  std::to_string(side_.size()) + " sides, " +
+                  std::to_string(proxies_) + " counted, " +
                   std::to_string(proxy_at_.size()) + " indexed faces, " +
                   std::to_string(tet_at_.size()) + " indexed tets");
   return out;

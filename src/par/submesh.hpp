@@ -137,8 +137,8 @@ class Submesh {
   void mark_deferred(TetId t) { inside_[t] |= 2; }
   // What a proxy knows of the tet across it (precondition: t is a live proxy).
   const Side& proxy_side(TetId t) const { return side_.at(t); }
-  std::size_t real_tets() const { return store_.live() - side_.size(); }
-  std::size_t proxies() const { return side_.size(); }
+  std::size_t real_tets() const { return store_.live() - proxies_; }
+  std::size_t proxies() const { return proxies_; }
   std::size_t waiting_relinks() const;
 
   // Removes `tets` (live, not proxies, no repeats) for submesh `to` (not this one).
@@ -187,19 +187,29 @@ class Submesh {
   std::vector<Point> points_;
   std::vector<Gid> gids_;
   std::vector<std::uint8_t> tags_;
+  // Local vertex ids by global id: M_o's (dense ids below 2^40) in a vector, the others
+  // hashed.
+  std::vector<VertexId> m0_local_;
   std::unordered_map<Gid, VertexId> local_;
   std::vector<std::uint8_t> inside_;      // per slot
   std::vector<Gid> tet_gid_;              // per slot
   std::vector<std::uint32_t> epoch_;      // per slot
-  // Real tets by global id: those made here by slot_of_serial_[serial], checked against
-  // tet_gid_ (a slot freed or reused no longer matches, so nothing is erased: the hot path
-  // of a commit touches no hash map); the others (from M_o or another submesh) in tet_at_.
+  // Real tets by global id: those made here by slot_of_serial_[serial], M_o's by
+  // m0_slot_[gid], each checked against tet_gid_ (a slot freed or reused no longer
+  // matches, so nothing is erased: the hot paths touch no hash map); those made by another
+  // submesh in tet_at_.
   std::vector<TetId> slot_of_serial_;
+  std::vector<TetId> m0_slot_;
   std::unordered_map<Gid, TetId> tet_at_;
   bool made_here(Gid g) const { return g >> 40 == Gid{id_} + 1; }
+  static bool from_m0(Gid g) { return g >> 40 == 0; }
   void index_tet(Gid g, TetId t);
   void unindex_tet(Gid g);
-  std::unordered_map<TetId, Side> side_;   // per live proxy
+  std::vector<Side> side_;   // per slot: meaningful for a live proxy
+  std::size_t proxies_ = 0;  // live proxies
+  // take(): per slot and per vertex, the take() that last marked it.
+  std::vector<std::uint32_t> taken_, seen_;
+  std::uint32_t takes_ = 0;
   std::unordered_map<FaceKey, TetId, FaceKeyHash> proxy_at_;
   std::unordered_map<Gid, Claim> moved_;   // tets given away: the latest hand-over;
                                            // deleted tets another submesh may name
