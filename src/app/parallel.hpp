@@ -47,7 +47,7 @@ class RunAbandoned : public std::runtime_error {
 // The refinement of vm by every rank of the run (world().size > 1). On rank 0: the result of
 // the completion, with the parallel figures in the summary (object "parallel") and on
 // stderr; elsewhere nullopt (rank 0 finishes the run). `seconds` gets the wall time of the
-// phases before the completion (coarse, parallel, gather, absorb). `latency_us` > 0: every
+// phases before the completion (coarse, parallel, gather, assemble). `latency_us` > 0: every
 // message of the parallel phase is held that long before it is delivered. `submeshes`
 // N >= P (0: P) parts of M_o, submesh k on rank k mod P (par/actor_mux.hpp). `owners`
 // (when given) gets, on rank 0, who made each vertex (app/partitioned_output.hpp).
