@@ -233,13 +233,13 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     seconds += timer.lap("owners");
   }
   // The whole mesh from the submeshes' tets, in place of M_o (par/assembly.hpp).
-  std::size_t added = 0;
+  par::Assembled assembled;
   if (distribute) {
     std::vector<par::Piece> all;
     par::WireReader r(pieces);
     while (!r.done()) all.push_back(par::get_piece(r));
     std::vector<std::byte>().swap(pieces);
-    added = par::assemble(vm, all);
+    assembled = par::assemble(vm, all);
   }
   seconds += timer.lap("assemble");
   std::uint64_t committed = 0;
@@ -263,11 +263,15 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                          {"partition_note", partition_note},
                                          {"initial_tets", m0_tets},
                                          {"points", committed},
-                                         {"points_absorbed", added},
+                                         {"points_absorbed", assembled.added},
                                          {"slowest_rank_seconds", slowest},
                                          {"per_rank", ranks}});
   if (!figures.empty()) print_table(figures);
+  // The completion: every bad tet the phase left is one it marked deferred (its steps
+  // and arrivals are all tested, and termination leaves no queue), so only those are
+  // queued at the start, not every tet tested again.
   refine::RefineOptions rest = opt;
+  if (distribute) rest.start_tets = std::move(assembled.deferred);
   return refine::refine(vm, rest);
 }
 

@@ -33,7 +33,7 @@ Piece piece_of(const Submesh& s) {
       }
       x.v[static_cast<std::size_t>(i)] = vindex[v];
     }
-    x.inside = s.inside(t) ? 1 : 0;
+    x.inside = static_cast<std::uint8_t>((s.inside(t) ? 1 : 0) | (s.deferred(t) ? 2 : 0));
   }
   for (TetId t = 0; t < st.slots(); ++t) {
     if (index[t] == kNone) continue;
@@ -67,7 +67,8 @@ struct OpenFace {
 
 }  // namespace
 
-std::size_t assemble(refine::VolumeMesh& m, std::span<const Piece> pieces) {
+Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces) {
+  Assembled out;
   const std::size_t n0 = m.dt.num_points();
   std::vector<Point> points(m.dt.points().begin(), m.dt.points().end());
   std::unordered_map<Gid, VertexId> fresh;  // vertices made in the parallel phase
@@ -97,6 +98,7 @@ std::size_t assemble(refine::VolumeMesh& m, std::span<const Piece> pieces) {
       ids.push_back(st.create(vertex(x.v[0]), vertex(x.v[1]), vertex(x.v[2]), vertex(x.v[3])));
       if (inside.size() <= ids.back()) inside.resize(ids.back() + 1, 0);
       inside[ids.back()] = x.inside & 1;
+      if ((x.inside & 2) != 0) out.deferred.push_back(ids.back());
     }
     for (std::size_t j = 0; j < p.tets.size(); ++j)
       for (int f = 0; f < 4; ++f) {
@@ -124,12 +126,12 @@ std::size_t assemble(refine::VolumeMesh& m, std::span<const Piece> pieces) {
                              std::to_string(open[i].key[2]) + ") is not shared by two tets");
     st.link(open[i].h, open[i + 1].h);
   }
-  const std::size_t added = points.size() - n0;
+  out.added = points.size() - n0;
   m.dt.adopt(std::move(points), std::move(st));
   m.inside = std::move(inside);
-  for (std::size_t v = n0; v < n0 + added; ++v)
+  for (std::size_t v = n0; v < n0 + out.added; ++v)
     m.map_vertex(static_cast<VertexId>(v), refine::kNone);
-  return added;
+  return out;
 }
 
 }  // namespace pdr::par

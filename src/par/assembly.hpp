@@ -31,7 +31,8 @@ namespace pdr::par {
 
 // A tet of a piece: its vertices (indices into Piece::vertices, kGhostVertex for the
 // ghost), in the store's orientation; per face, the tet across as 4 * index + its face
-// index, or kAcrossProxy: in another piece; and its inside flag (bit 0).
+// index, or kAcrossProxy: in another piece; its inside flag (bit 0) and its deferred mark
+// (bit 1: Submesh::deferred).
 struct PieceTet {
   std::array<std::uint32_t, 4> v{};
   std::array<std::uint32_t, 4> across{};
@@ -51,12 +52,16 @@ Piece piece_of(const Submesh& s);
 void put_piece(WireWriter& w, const Piece& p);
 Piece get_piece(WireReader& r);
 
+struct Assembled {
+  std::size_t added = 0;        // vertices appended
+  std::vector<TetId> deferred;  // the tets marked deferred, by their new ids
+};
+
 // Replaces m's tets by the union of `pieces` (the submeshes of a partition of m after the
 // parallel phase): m's vertices keep their ids, the pieces' vertices with global ids from
 // m.dt.num_points() on are appended (off ∂Ω: vclass Interior, no D vertex), the inside
-// flags come with the tets. Returns the number of vertices appended. Throws
-// std::logic_error when the pieces do not glue into a closed mesh (a face left open, or
-// met by more than two tets).
-std::size_t assemble(refine::VolumeMesh& m, std::span<const Piece> pieces);
+// flags come with the tets. Throws std::logic_error when the pieces do not glue into a
+// closed mesh (a face left open, or met by more than two tets).
+Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces);
 
 }  // namespace pdr::par

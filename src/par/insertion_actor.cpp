@@ -228,6 +228,10 @@ void InsertionActor::round() {
   RootCavity rc = search_.root_cavity(sub_, s_.w.p, hint);
   if (rc.kind == RootCavity::Kind::OnVertex) {
     ++stats_.duplicates;
+    // A tet's step whose point is a vertex already (its rounded circumcenter): left to
+    // the completion, marked like a deferred step, so that every bad tet left is marked.
+    if (s_.w.tet != kNoGid)
+      if (const TetId t = sub_.find_tet(s_.w.tet); t != kNoTet) sub_.mark_deferred(t);
     finish();
     return;
   }

@@ -92,6 +92,11 @@ struct RefineOptions {
                                               // vertex
   std::vector<double> cylinders;  // inadmissible: protecting_cylinders(analysis)
                                   // (refine/split.hpp); empty: none
+  // Given: the only tets that may need a step at the start, every other inside tet being
+  // known to meet the bounds (the parallel run's completion: the steps its parallel phase
+  // deferred, app/parallel.hpp); the run queues these instead of testing every tet. A bad
+  // tet missing here is never refined, and the leftovers list it ("never refined").
+  std::optional<std::vector<TetId>> start_tets;
 };
 
 // Theorem 1's hypotheses hold, and the refinement's constructions on ∂Ω are exact:

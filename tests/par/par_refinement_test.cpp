@@ -22,6 +22,8 @@
 #include "delaunay/spatial_sort.hpp"
 #include "par/assembly.hpp"
 #include "refine/audit.hpp"
+#include "refine/flat.hpp"
+#include "refine/quality.hpp"
 #include "mesh/tables.hpp"
 #include "delaunay/export.hpp"
 #include "par/insertion_actor.hpp"
@@ -69,8 +71,8 @@ std::size_t absorb(refine::VolumeMesh& m, std::span<const Point> points) {
   return added;
 }
 
-// Every tet of m (outside ones and ghosts too), as points, with its flag (ghosts: the
-// three finite points and a zero).
+// Every tet of m (outside ones and ghosts too), as points, with its flag (bit 0) and
+// whether it is a ghost (bit 1; its ghost vertex stands as the origin).
 std::vector<std::pair<test::PointTet, int>> all_tets(const refine::VolumeMesh& m) {
   std::vector<std::pair<test::PointTet, int>> out;
   const TetStore& s = m.dt.store();
@@ -79,7 +81,8 @@ std::vector<std::pair<test::PointTet, int>> all_tets(const refine::VolumeMesh& m
     const VertexId* v = s.vertices(t);
     const Point o{0, 0, 0};
     const auto pt = [&](int i) { return v[i] == kGhostVertex ? o : m.dt.point(v[i]); };
-    out.emplace_back(point_tet(pt(0), pt(1), pt(2), pt(3)), m.is_inside(t) ? 1 : 0);
+    out.emplace_back(point_tet(pt(0), pt(1), pt(2), pt(3)),
+                     (m.is_inside(t) ? 1 : 0) | (s.is_ghost(t) ? 2 : 0));
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -158,13 +161,41 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     WireReader r(bytes);
     std::vector<Piece> back;
     while (!r.done()) back.push_back(get_piece(r));
-    EXPECT_EQ(assemble(g, back), run.points.size());
+    const Assembled assembled = assemble(g, back);
+    EXPECT_EQ(assembled.added, run.points.size());
     EXPECT_EQ(absorb(m, run.points), run.points.size());
     EXPECT_TRUE(g.dt.check_topology().empty());
     EXPECT_TRUE(refine::audit_volume(g).empty());
     EXPECT_TRUE(all_tets(g) == all_tets(m)) << "seed " << seed << ": assembly differs from insertion";
     EXPECT_EQ(g.dt.num_points(), m.dt.num_points());
     EXPECT_EQ(g.vclass.size(), g.dt.num_points());
+    {
+      const TetStore& gs = g.dt.store();
+      const TetId last = g.dt.last_tet();
+      const VertexId newest = static_cast<VertexId>(g.dt.num_points() - 1);
+      ASSERT_TRUE(last < gs.slots() && gs.is_alive(last) && !gs.is_ghost(last));
+      EXPECT_TRUE(std::find(gs.vertices(last), gs.vertices(last) + 4, newest) != gs.vertices(last) + 4);
+    }
+    // The tets marked deferred are exactly the assembled mesh's tets that the sequential
+    // refinement would queue (bad, or flat on a facet): the completion starts from them.
+    {
+      std::vector<TetId> queued;
+      const TetStore& gs = g.dt.store();
+      const refine::TetBounds b{2.0, std::nullopt, kTargetVolume};
+      for (TetId t = 0; t < gs.slots(); ++t) {
+        if (!gs.is_alive(t) || gs.is_ghost(t) || !g.is_inside(t)) continue;
+        const VertexId* v = gs.vertices(t);
+        if (refine::is_bad(g.dt.point(v[0]), g.dt.point(v[1]), g.dt.point(v[2]), g.dt.point(v[3]), b) ||
+            refine::subfacet_to_refine(g, t))
+          queued.push_back(t);
+      }
+      EXPECT_GT(queued.size(), 0u);
+      std::vector<TetId> marked = assembled.deferred;
+      std::sort(marked.begin(), marked.end());  // queued is sorted already
+      EXPECT_TRUE(queued == marked)
+          << "seed " << seed << ": " << queued.size() << " tets to queue, "
+          << assembled.deferred.size() << " marked deferred";
+    }
     // The union of the submeshes is M_o plus the points.
     std::vector<test::PointTet> want;
     const TetStore& s = m.dt.store();
@@ -195,18 +226,23 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
       EXPECT_FALSE(whole.accept(one, c)) << "seed " << seed << ": a bad tet was left undeferred";
     }
     std::printf("  %zu bad tets left to the completion\n", bad);
-    // The sequential completion.
+    // The sequential completion, from every tet (on the inserted mesh) and from the
+    // deferred ones (on the assembled mesh, as `mpirun pdr mesh` does).
     refine::RefineOptions o;
     o.max_volume = kTargetVolume;
     o.d = 2;  // cube-in-cube's d (the derived cap only)
-    const refine::RefineResult rr = refine::refine(m, o);
-    EXPECT_TRUE(rr.leftovers.empty());
-    const MeshData mesh = to_mesh_data(m.dt, m.inside);
-    check::Options co;
-    co.ratio_bound = 2.0;
-    const check::Report report = check::check_mesh(check::view_of(mesh), plc, co);
-    for (const auto& ch : report.checks)
-      EXPECT_NE(ch.status, check::Status::Fail) << "seed " << seed << ": " << ch.id;
+    refine::RefineOptions from_deferred = o;
+    from_deferred.start_tets = assembled.deferred;
+    for (const auto& [mesh_of, opts] : {std::pair{&m, &o}, std::pair{&g, &from_deferred}}) {
+      const refine::RefineResult rr = refine::refine(*mesh_of, *opts);
+      EXPECT_TRUE(rr.leftovers.empty());
+      const MeshData mesh = to_mesh_data(mesh_of->dt, mesh_of->inside);
+      check::Options co;
+      co.ratio_bound = 2.0;
+      const check::Report report = check::check_mesh(check::view_of(mesh), plc, co);
+      for (const auto& ch : report.checks)
+        EXPECT_NE(ch.status, check::Status::Fail) << "seed " << seed << ": " << ch.id;
+    }
   }
 }
 
@@ -252,7 +288,6 @@ TEST(ParRefinement, VertexTagsChangeNoDecision) {
   for (TetId t = 0; t < with.store().slots(); ++t) {
     const TetStore& os = with.store();
     if (!os.is_alive(t) || os.is_ghost(t) || os.is_proxy(t) || !with.inside(t)) continue;
-    ASSERT_EQ(tagged.wants(with, t), plain.wants(without, t));
     if (!tagged.wants(with, t)) continue;
     const Point p = tagged.point(with, t);
     WalkRng rng;
