@@ -110,7 +110,7 @@ void Delaunay::adopt(std::vector<Point> points, TetStore store) {
   store_ = std::move(store);
   last_ = kNoTet;
   const auto newest = static_cast<VertexId>(points_.size() - 1);
-  for (TetId t = 0; t < store_.slots() && last_ == kNoTet; ++t)
+  for (TetId t = static_cast<TetId>(store_.slots()); t-- > 0 && last_ == kNoTet;)
     if (store_.is_alive(t) && !store_.is_ghost(t))
       for (int i = 0; i < 4; ++i)
         if (store_.vertex(t, i) == newest) last_ = t;

@@ -156,7 +156,7 @@ bool InsertionActor::complete(const Cavity& c, Gid tet) {
     if (const TetId t = sub_.find_tet(tet); t != kNoTet) sub_.mark_deferred(t);
     return false;
   }
-  sub_.insert(c, rules_ != nullptr ? 1 : 0);
+  sub_.insert(c, rules_ != nullptr ? 1 : 0, rules_ != nullptr ? rules_->new_vertex_tag() : 0);
   ++stats_.commits;
   if (rules_ != nullptr) {
     committed_.push_back(c.point);

@@ -1,7 +1,6 @@
 // The parallel phase on one rank; see par/par_refinement.hpp.
 #include "par/par_refinement.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -23,13 +22,17 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   if (n != t.size()) mux.emplace(t, n);
   std::vector<Transport*> ports;
   std::vector<std::unique_ptr<InsertionActor>> actors;
+  // Few submeshes here: each finds M_o's tets and vertices through vectors as long as M_o
+  // (Submesh::extract), at most four times M_o's ids, which this rank holds anyway.
+  constexpr int kDenseSubmeshes = 4;
+  const bool dense = (n + t.size() - 1) / t.size() <= kDenseSubmeshes;
   for (int k = t.rank(); k < n; k += t.size()) {
     Transport& port = mux ? mux->port(k) : t;
     ports.push_back(&port);
     actors.push_back(std::make_unique<InsertionActor>(
         port,
         Submesh::extract(static_cast<ActorId>(k), m0.dt.store(), m0.dt.points(), m0.inside,
-                         part, rules.vertex_tags()),
+                         part, rules.vertex_tags(), dense),
         seed, &rules));
   }
   RankResult out;

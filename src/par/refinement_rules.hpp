@@ -48,6 +48,8 @@ class RefinementRules final : public StepRules {
   bool wants(const Submesh& s, TetId t) const override;
   Point point(const Submesh& s, TetId t) const override;
   bool accept(const Submesh& s, const Cavity& c) override;
+  // A committed point is off ∂Ω (a step that would put one on it is deferred).
+  std::uint8_t new_vertex_tag() const override { return kInterior; }
 
   const DeferCounts& deferred() const { return deferred_; }
 

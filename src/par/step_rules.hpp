@@ -27,6 +27,8 @@ class StepRules {
   // Cavity c is complete in s (conflict tets and ring real tets of s). True: commit it,
   // the new tets get `inside` = 1; false: the step is deferred (counted by the caller).
   virtual bool accept(const Submesh& s, const Cavity& c) = 0;
+  // The tag of a committed point's vertex (Submesh::tag).
+  virtual std::uint8_t new_vertex_tag() const { return 0; }
 };
 
 }  // namespace pdr::par

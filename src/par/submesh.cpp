@@ -26,13 +26,8 @@ std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
 
 VertexId Submesh::local_vertex(Gid g, const Point* p, std::uint8_t tag) {
   if (g == kGhostGid) return kGhostVertex;
-  VertexId* slot = nullptr;
-  if (from_m0(g)) {
-    if (m0_local_.size() <= g) m0_local_.resize(static_cast<std::size_t>(g + g / 2 + 64), kNoVertex);
-    slot = &m0_local_[static_cast<std::size_t>(g)];
-  } else {
-    slot = &local_.try_emplace(g, kNoVertex).first->second;
-  }
+  VertexId* slot = g < m0_local_.size() ? &m0_local_[static_cast<std::size_t>(g)]
+                                          : &local_.try_emplace(g, kNoVertex).first->second;
   if (*slot == kNoVertex) {
     if (p == nullptr) throw std::logic_error("submesh: vertex " + std::to_string(g) + " unknown");
     *slot = static_cast<VertexId>(points_.size());
@@ -66,8 +61,7 @@ void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t insid
 }
 
 void Submesh::index_tet(Gid g, TetId t) {
-  if (from_m0(g)) {
-    if (m0_slot_.size() <= g) m0_slot_.resize(static_cast<std::size_t>(g + g / 2 + 64), kNoTet);
+  if (g < m0_slot_.size()) {
     m0_slot_[static_cast<std::size_t>(g)] = t;
     return;
   }
@@ -81,7 +75,7 @@ void Submesh::index_tet(Gid g, TetId t) {
 }
 
 void Submesh::unindex_tet(Gid g) {
-  if (!made_here(g) && !from_m0(g)) tet_at_.erase(g);
+  if (!made_here(g) && g >= m0_slot_.size()) tet_at_.erase(g);
 }
 
 TetId Submesh::find_tet(Gid g) const {
@@ -89,8 +83,8 @@ TetId Submesh::find_tet(Gid g) const {
   if (made_here(g)) {
     const std::size_t serial = static_cast<std::size_t>(g & ((Gid{1} << 40) - 1));
     if (serial < slot_of_serial_.size()) t = slot_of_serial_[serial];
-  } else if (from_m0(g)) {
-    if (g < m0_slot_.size()) t = m0_slot_[static_cast<std::size_t>(g)];
+  } else if (g < m0_slot_.size()) {
+    t = m0_slot_[static_cast<std::size_t>(g)];
   } else if (const auto it = tet_at_.find(g); it != tet_at_.end()) {
     t = it->second;
   }
@@ -112,6 +106,7 @@ TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
 
 void Submesh::drop_proxy(TetId proxy) {
   proxy_at_.erase(key_of(proxy, 3));
+  side_[proxy] = Side{};
   --proxies_;
   store_.destroy(proxy);
 }
@@ -123,8 +118,12 @@ void Submesh::claim(TetId proxy, const Claim& c) {
 
 Submesh Submesh::extract(ActorId k, const TetStore& s, std::span<const Point> pts,
                          std::span<const std::uint8_t> inside, const Partition& p,
-                         std::span<const std::uint8_t> tags) {
+                         std::span<const std::uint8_t> tags, bool dense) {
   Submesh m(k);
+  if (dense) {
+    m.m0_slot_.assign(s.slots(), kNoTet);
+    m.m0_local_.assign(pts.size(), kNoVertex);
+  }
   std::vector<TetId> local(s.slots(), kNoTet);
   std::vector<TetId> mine;
   for (TetId t = 0; t < s.slots(); ++t) {
@@ -157,7 +156,11 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
     std::fill(seen_.begin(), seen_.end(), 0);
     takes_ = 1;
   }
-  for (const TetId t : tets) taken_[t] = takes_;
+  for (const TetId t : tets) {
+    if (t >= store_.slots() || !store_.is_alive(t) || store_.is_proxy(t))
+      throw std::logic_error("submesh: take of a dead tet or a proxy");
+    taken_[t] = takes_;
+  }
   seen_.resize(points_.size(), 0);
   Migration m;
   m.from = id_;
@@ -166,8 +169,6 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
   std::vector<Side> keep_sides;
   std::vector<TetId> drop;
   for (const TetId t : tets) {
-    if (!store_.is_alive(t) || store_.is_proxy(t))
-      throw std::logic_error("submesh: take of a dead tet or a proxy");
     TetRecord r;
     r.gid = tet_gid_[t];
     r.epoch = epoch_[t] + 1;
@@ -271,8 +272,8 @@ std::vector<TetId> Submesh::give(const Migration& m) {
   return ids;
 }
 
-VertexId Submesh::insert(const Cavity& c, std::uint8_t inside) {
-  const VertexId v = local_vertex(fresh_gid(), &c.point);
+VertexId Submesh::insert(const Cavity& c, std::uint8_t inside, std::uint8_t tag) {
+  const VertexId v = local_vertex(fresh_gid(), &c.point, tag);
   for (const TetId t : c.conflict) {
     unindex_tet(tet_gid_[t]);
     if (exposed_[t] != 0) moved_[tet_gid_[t]] = Claim{kDeleted, ~std::uint32_t{0}};
@@ -320,7 +321,7 @@ std::vector<std::string> Submesh::check() const {
   for (TetId t = 0; t < store_.slots(); ++t) {
     if (!store_.is_alive(t)) continue;
     if (!store_.is_proxy(t)) {
-      if (!made_here(tet_gid_[t]) && !from_m0(tet_gid_[t])) ++foreign;
+      if (!made_here(tet_gid_[t]) && tet_gid_[t] >= m0_slot_.size()) ++foreign;
       if (find_tet(tet_gid_[t]) != t)
         out.push_back("submesh.tet-index: tet " + std::to_string(t) + " of submesh " +
                       std::to_string(id_) + " is not indexed by its global id");
@@ -328,7 +329,7 @@ std::vector<std::string> Submesh::check() const {
     }
     ++proxies;
     const auto it = proxy_at_.find(key_of(t, 3));
-    if (it == proxy_at_.end() || it->second != t)
+    if (it == proxy_at_.end() || it->second != t || side_[t].tet == kNoGid)
       out.push_back("submesh.proxy-index: proxy " + std::to_string(t) + " of submesh " +
                     std::to_string(id_) + " is not indexed by its face");
   }

@@ -113,17 +113,21 @@ class Submesh {
 
   // Submesh k of a partition of (s, pts): its tets (ghosts included), with proxies on the
   // faces towards the other parts. Vertex v of pts gets global id v and tag tags[v] (0
-  // when tags is shorter), tet t global id t.
+  // when tags is shorter), tet t global id t. `dense`: the tets and vertices of (s, pts)
+  // are found by their global ids through vectors as long as the mesh (4 bytes per tet
+  // and per vertex of it, whatever the submesh holds: for a rank with few submeshes),
+  // else through hash maps of what the submesh holds.
   static Submesh extract(ActorId k, const TetStore& s, std::span<const Point> pts,
                          std::span<const std::uint8_t> inside, const Partition& p,
-                         std::span<const std::uint8_t> tags = {});
+                         std::span<const std::uint8_t> tags = {}, bool dense = false);
 
   ActorId id() const { return id_; }
   const TetStore& store() const { return store_; }
   std::span<const Point> points() const { return points_; }
   Gid gid(VertexId v) const { return v == kGhostVertex ? kGhostGid : gids_[v]; }
   // A byte per vertex that the submesh does not read: given to M_o's vertices by
-  // extract(), it travels with the vertex; a vertex made by insert() has tag 0 (the
+  // extract(), it travels with the vertex; a vertex made by insert() gets the tag given
+  // there (the
   // refinement: where the vertex lies on ∂Ω, so that most edges and faces are known to be
   // no element of D without a lookup, par/refinement_rules.hpp). 0 for the ghost.
   std::uint8_t tag(VertexId v) const { return v < tags_.size() ? tags_[v] : 0; }
@@ -151,11 +155,11 @@ class Submesh {
   // Bowyer-Watson at this submesh: commits cavity c, built on this store as it is now and
   // complete (conflict tets and ring all real tets here: par/cavity_search.hpp), with
   // c.point as a new vertex. The vertex and the new tets get fresh global ids (this
-  // submesh's id and a serial); the new tets get `inside`. The deleted tets that another
-  // submesh may name are recorded (moved() says kDeleted), so a late request or notice
-  // about one is answered. Returns
-  // the new vertex; `created()` lists the new tets.
-  VertexId insert(const Cavity& c, std::uint8_t inside);
+  // submesh's id and a serial); the new tets get `inside`, the vertex `tag`. The deleted
+  // tets that another submesh may name are recorded (moved() says kDeleted), so a late
+  // request or notice about one is answered. Returns the new vertex; `created()` lists the
+  // new tets.
+  VertexId insert(const Cavity& c, std::uint8_t inside, std::uint8_t tag = 0);
   std::span<const TetId> created() const { return committer_.created(); }
 
   // Applies a relink notice addressed here; false when it must go on to the submesh this
@@ -187,22 +191,20 @@ class Submesh {
   std::vector<Point> points_;
   std::vector<Gid> gids_;
   std::vector<std::uint8_t> tags_;
-  // Local vertex ids by global id: M_o's (dense ids below 2^40) in a vector, the others
-  // hashed.
+  // Local vertex ids by global id; with a dense index (extract()), M_o's in a vector.
   std::vector<VertexId> m0_local_;
   std::unordered_map<Gid, VertexId> local_;
   std::vector<std::uint8_t> inside_;      // per slot
   std::vector<Gid> tet_gid_;              // per slot
   std::vector<std::uint32_t> epoch_;      // per slot
-  // Real tets by global id: those made here by slot_of_serial_[serial], M_o's by
-  // m0_slot_[gid], each checked against tet_gid_ (a slot freed or reused no longer
-  // matches, so nothing is erased: the hot paths touch no hash map); those made by another
-  // submesh in tet_at_.
+  // Real tets by global id: those made here by slot_of_serial_[serial], with a dense
+  // index M_o's by m0_slot_[gid], each checked against tet_gid_ (a slot freed or reused no
+  // longer matches, so nothing is erased: the hot paths touch no hash map); the others in
+  // tet_at_, which holds only the tets here.
   std::vector<TetId> slot_of_serial_;
   std::vector<TetId> m0_slot_;
   std::unordered_map<Gid, TetId> tet_at_;
   bool made_here(Gid g) const { return g >> 40 == Gid{id_} + 1; }
-  static bool from_m0(Gid g) { return g >> 40 == 0; }
   void index_tet(Gid g, TetId t);
   void unindex_tet(Gid g);
   std::vector<Side> side_;   // per slot: meaningful for a live proxy

@@ -53,6 +53,7 @@ class WireReader {
   }
   template <class T>
   std::vector<T> get_vector() {
+    static_assert(std::is_trivially_copyable_v<T>);
     const auto n = get<std::uint64_t>();
     if (n > (b_.size() - pos_) / sizeof(T)) throw std::logic_error("wire: a vector too long");
     std::vector<T> v(static_cast<std::size_t>(n));

@@ -107,7 +107,7 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
     actors.push_back(std::make_unique<InsertionActor>(
         net.endpoint(r),
         Submesh::extract(static_cast<ActorId>(r), m0.dt.store(), m0.dt.points(), m0.inside, part,
-                         rules.back()->vertex_tags()),
+                         rules.back()->vertex_tags(), /*dense=*/seed % 2 == 1),
         seed, rules.back().get()));
     actors.back()->add_wanted_tets();
   }
@@ -119,6 +119,15 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
     EXPECT_TRUE(problems.empty()) << "seed " << seed << ": " << problems.front();
     EXPECT_EQ(s.waiting_relinks(), 0u);
     out.pieces.push_back(piece_of(s));
+    // Every vertex kept its tag across the migrations: M_o's class, or interior for the
+    // committed points.
+    for (VertexId v = 0; v < s.points().size(); ++v) {
+      const Gid g = s.gid(v);
+      const std::uint8_t want = g < m0.dt.num_points() ? rules.front()->vertex_tags()[g]
+                                                       : rules.front()->new_vertex_tag();
+      EXPECT_EQ(s.tag(v), want) << "seed " << seed << ": vertex " << g;
+      if (s.tag(v) != want) break;
+    }
     out.points.insert(out.points.end(), a->committed_points().begin(), a->committed_points().end());
     const TetStore& st = s.store();
     std::vector<test::PointTet> tets;

@@ -122,8 +122,10 @@ inline World cut(std::uint32_t parts, std::uint64_t seed) {
   const Partition p = partition_tets(vm.dt.store(), vm.inside, parts, seed);
   World w;
   w.rng.seed(seed);
+  // Odd seeds: M_o's ids through the dense vectors, even ones through the hash maps.
   for (ActorId k = 0; k < parts; ++k)
-    w.subs.push_back(Submesh::extract(k, vm.dt.store(), vm.dt.points(), vm.inside, p));
+    w.subs.push_back(Submesh::extract(k, vm.dt.store(), vm.dt.points(), vm.inside, p, {},
+                                      /*dense=*/seed % 2 == 1));
   return w;
 }
 
