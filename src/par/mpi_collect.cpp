@@ -31,39 +31,57 @@ void wait_asleep(MPI_Request& r) {
   }
 }
 
-// Gathers `mine` (bytes) from every rank at rank 0, in rank order.
-std::vector<std::byte> gather_bytes(const std::byte* data, std::size_t size) {
+}  // namespace
+
+std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t round_bytes) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-    throw std::runtime_error("mpi: a rank's part of a gather exceeds MPI's int count");
-  const int count = static_cast<int>(size);
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
+  const auto n = static_cast<std::size_t>(ranks);
+  // A round's counts and offsets are ints: at most INT_MAX bytes in all per round.
+  const std::size_t chunk = std::max<std::size_t>(
+      1, std::min(round_bytes, static_cast<std::size_t>(std::numeric_limits<int>::max()) / n));
+  std::uint64_t size = mine.size(), most = 0;
+  std::vector<std::uint64_t> sizes(n);
   MPI_Request r = MPI_REQUEST_NULL;
-  check(MPI_Igather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD, &r),
+  check(MPI_Igather(&size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, 0, MPI_COMM_WORLD, &r),
         "MPI_Igather");
   wait_asleep(r);
-  std::size_t total = 0;
-  for (std::size_t k = 0; k < counts.size(); ++k) {
-    if (total > static_cast<std::size_t>(std::numeric_limits<int>::max()) - static_cast<std::size_t>(counts[k]))
-      throw std::runtime_error("mpi: a gather exceeds MPI's int count");
-    offsets[k] = static_cast<int>(total);
-    total += static_cast<std::size_t>(counts[k]);
-  }
-  std::vector<std::byte> all(rank == 0 ? total : 0);
-  check(MPI_Igatherv(data, count, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
-                     0, MPI_COMM_WORLD, &r),
-        "MPI_Igatherv");
+  check(MPI_Iallreduce(&size, &most, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD, &r),
+        "MPI_Iallreduce");
   wait_asleep(r);
+  std::vector<std::size_t> start(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k) start[k + 1] = start[k] + sizes[k];
+  std::vector<std::byte> all(rank == 0 ? start[n] : 0);
+  std::vector<std::byte> round(rank == 0 ? n * chunk : 0);
+  std::vector<int> counts(n), offsets(n);
+  for (std::size_t k = 0; k < n; ++k) offsets[k] = static_cast<int>(k * chunk);
+  const auto part = [&](std::uint64_t whole, std::size_t lo) {
+    return whole > lo ? static_cast<int>(std::min<std::uint64_t>(chunk, whole - lo)) : 0;
+  };
+  for (std::size_t lo = 0; lo < most; lo += chunk) {
+    for (std::size_t k = 0; k < n; ++k) counts[k] = part(sizes[k], lo);
+    const int mine_now = part(size, lo);
+    check(MPI_Igatherv(mine.data() + (mine_now > 0 ? lo : 0), mine_now, MPI_BYTE, round.data(),
+                       counts.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD, &r),
+          "MPI_Igatherv");
+    wait_asleep(r);
+    if (rank == 0)
+      for (std::size_t k = 0; k < n; ++k)
+        if (counts[k] > 0)
+          std::memcpy(all.data() + start[k] + lo, round.data() + k * chunk,
+                      static_cast<std::size_t>(counts[k]));
+  }
   return all;
 }
+
+namespace {
 
 template <class T>
 std::vector<T> gather_values(const std::vector<T>& mine) {
   static_assert(std::is_trivially_copyable_v<T>);
   const std::vector<std::byte> b =
-      gather_bytes(reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(T));
+      gather_bytes(std::span(reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(T)));
   std::vector<T> out(b.size() / sizeof(T));
   if (!b.empty()) std::memcpy(out.data(), b.data(), b.size());
   return out;
@@ -73,9 +91,7 @@ std::vector<T> gather_values(const std::vector<T>& mine) {
 
 std::vector<Point> gather_points(const std::vector<Point>& mine) { return gather_values(mine); }
 
-std::vector<std::byte> gather_bytes(const std::vector<std::byte>& mine) {
-  return gather_values(mine);
-}
+
 
 std::vector<RankFigures> gather_figures(const RankFigures& mine) {
   return gather_values(std::vector<RankFigures>{mine});

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "geom/point.hpp"
@@ -18,8 +19,11 @@ namespace pdr::par {
 // Every rank's points, concatenated in rank order, at rank 0 (empty elsewhere).
 std::vector<Point> gather_points(const std::vector<Point>& mine);
 
-// Every rank's bytes, concatenated in rank order, at rank 0 (empty elsewhere).
-std::vector<std::byte> gather_bytes(const std::vector<std::byte>& mine);
+// Every rank's bytes, concatenated in rank order, at rank 0 (empty elsewhere). Any size:
+// in rounds of at most `round_bytes` per rank (and at most INT_MAX bytes in all, MPI's
+// counts being ints), every rank taking part in every round.
+std::vector<std::byte> gather_bytes(std::span<const std::byte> mine,
+                                    std::size_t round_bytes = std::size_t{1} << 30);
 
 // Every rank's figures, in rank order, at rank 0 (empty elsewhere).
 std::vector<RankFigures> gather_figures(const RankFigures& mine);
