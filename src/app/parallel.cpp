@@ -235,11 +235,10 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // The whole mesh from the submeshes' tets, in place of M_o (par/assembly.hpp).
   par::Assembled assembled;
   if (distribute) {
-    std::vector<par::Piece> all;
-    par::WireReader r(pieces);
-    while (!r.done()) all.push_back(par::get_piece(r));
+    par::Assembly a(vm, pieces.size() / sizeof(par::PieceTet));
+    for (par::WireReader r(pieces); !r.done();) a.add(par::get_piece(r));
     std::vector<std::byte>().swap(pieces);
-    assembled = par::assemble(vm, all);
+    assembled = a.finish(vm);
   }
   seconds += timer.lap("assemble");
   std::uint64_t committed = 0;

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
 #include "mesh/tables.hpp"
 
@@ -57,81 +56,75 @@ Piece get_piece(WireReader& r) {
   return p;
 }
 
-namespace {
+Assembly::Assembly(const refine::VolumeMesh& m, std::size_t tets)
+    : n0_(m.dt.num_points()), points_(m.dt.points().begin(), m.dt.points().end()) {
+  st_.reserve(tets);
+  inside_.reserve(tets);
+}
 
-// A face by its vertex ids, sorted, and the half-face it is of.
-struct OpenFace {
-  std::array<VertexId, 3> key;
-  HalfFace h;
-};
-
-}  // namespace
-
-Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces) {
-  Assembled out;
-  const std::size_t n0 = m.dt.num_points();
-  std::vector<Point> points(m.dt.points().begin(), m.dt.points().end());
-  std::unordered_map<Gid, VertexId> fresh;  // vertices made in the parallel phase
-  std::size_t total = 0;
-  for (const Piece& p : pieces) total += p.tets.size();
-  TetStore st;
-  st.reserve(total);
-  std::vector<std::uint8_t> inside;
-  inside.reserve(total);
-  std::vector<OpenFace> open;
-  std::vector<VertexId> vmap;
-  std::vector<TetId> ids;
-  for (const Piece& p : pieces) {
-    vmap.clear();
-    for (const VertexRecord& v : p.vertices) {
-      if (v.gid < n0) {
-        vmap.push_back(static_cast<VertexId>(v.gid));
+void Assembly::add(const Piece& p) {
+  vmap_.clear();
+  for (const VertexRecord& v : p.vertices) {
+    if (v.gid < n0_) {
+      vmap_.push_back(static_cast<VertexId>(v.gid));
+      continue;
+    }
+    const auto [it, added] = fresh_.try_emplace(v.gid, static_cast<VertexId>(points_.size()));
+    if (added) points_.push_back(v.p);
+    vmap_.push_back(it->second);
+  }
+  const auto vertex = [&](std::uint32_t i) { return i == kGhostVertex ? kGhostVertex : vmap_.at(i); };
+  ids_.clear();
+  for (const PieceTet& x : p.tets) {
+    ids_.push_back(st_.create(vertex(x.v[0]), vertex(x.v[1]), vertex(x.v[2]), vertex(x.v[3])));
+    if (inside_.size() <= ids_.back()) inside_.resize(ids_.back() + 1, 0);
+    inside_[ids_.back()] = x.inside & 1;
+    if ((x.inside & 2) != 0) out_.deferred.push_back(ids_.back());
+  }
+  for (std::size_t j = 0; j < p.tets.size(); ++j)
+    for (int f = 0; f < 4; ++f) {
+      const std::uint32_t a = p.tets[j].across[static_cast<std::size_t>(f)];
+      if (a != kAcrossProxy) {
+        st_.set_opposite(half_face(ids_[j], f), half_face(ids_.at(a >> 2), static_cast<int>(a & 3)));
         continue;
       }
-      const auto [it, added] = fresh.try_emplace(v.gid, static_cast<VertexId>(points.size()));
-      if (added) points.push_back(v.p);
-      vmap.push_back(it->second);
+      const auto& fv = tables::kFaceVertex[f];
+      OpenFace o{{st_.vertex(ids_[j], fv[0]), st_.vertex(ids_[j], fv[1]), st_.vertex(ids_[j], fv[2])},
+                 half_face(ids_[j], f)};
+      std::sort(o.key.begin(), o.key.end());
+      open_.push_back(o);
     }
-    const auto vertex = [&](std::uint32_t i) { return i == kGhostVertex ? kGhostVertex : vmap.at(i); };
-    ids.clear();
-    for (const PieceTet& x : p.tets) {
-      ids.push_back(st.create(vertex(x.v[0]), vertex(x.v[1]), vertex(x.v[2]), vertex(x.v[3])));
-      if (inside.size() <= ids.back()) inside.resize(ids.back() + 1, 0);
-      inside[ids.back()] = x.inside & 1;
-      if ((x.inside & 2) != 0) out.deferred.push_back(ids.back());
-    }
-    for (std::size_t j = 0; j < p.tets.size(); ++j)
-      for (int f = 0; f < 4; ++f) {
-        const std::uint32_t a = p.tets[j].across[static_cast<std::size_t>(f)];
-        if (a != kAcrossProxy) {
-          st.set_opposite(half_face(ids[j], f), half_face(ids.at(a >> 2), static_cast<int>(a & 3)));
-          continue;
-        }
-        const auto& fv = tables::kFaceVertex[f];
-        OpenFace o{{st.vertex(ids[j], fv[0]), st.vertex(ids[j], fv[1]), st.vertex(ids[j], fv[2])},
-                   half_face(ids[j], f)};
-        std::sort(o.key.begin(), o.key.end());
-        open.push_back(o);
-      }
-  }
+}
+
+Assembled Assembly::finish(refine::VolumeMesh& m) {
+  if (m.dt.num_points() != n0_) throw std::logic_error("assembly: the mesh changed meanwhile");
   // Faces between pieces: each exactly twice.
-  std::sort(open.begin(), open.end(),
+  std::sort(open_.begin(), open_.end(),
             [](const OpenFace& a, const OpenFace& b) { return a.key < b.key; });
-  for (std::size_t i = 0; i < open.size(); i += 2) {
-    if (i + 1 == open.size() || open[i].key != open[i + 1].key ||
-        (i + 2 < open.size() && open[i + 2].key == open[i].key))
+  for (std::size_t i = 0; i < open_.size(); i += 2) {
+    if (i + 1 == open_.size() || open_[i].key != open_[i + 1].key ||
+        (i + 2 < open_.size() && open_[i + 2].key == open_[i].key))
       throw std::logic_error("assembly: a face between submeshes (vertices " +
-                             std::to_string(open[i].key[0]) + ", " +
-                             std::to_string(open[i].key[1]) + ", " +
-                             std::to_string(open[i].key[2]) + ") is not shared by two tets");
-    st.link(open[i].h, open[i + 1].h);
+                             std::to_string(open_[i].key[0]) + ", " +
+                             std::to_string(open_[i].key[1]) + ", " +
+                             std::to_string(open_[i].key[2]) + ") is not shared by two tets");
+    st_.link(open_[i].h, open_[i + 1].h);
   }
-  out.added = points.size() - n0;
-  m.dt.adopt(std::move(points), std::move(st));
-  m.inside = std::move(inside);
-  for (std::size_t v = n0; v < n0 + out.added; ++v)
+  std::vector<OpenFace>().swap(open_);
+  out_.added = points_.size() - n0_;
+  m.dt.adopt(std::move(points_), std::move(st_));
+  m.inside = std::move(inside_);
+  for (std::size_t v = n0_; v < n0_ + out_.added; ++v)
     m.map_vertex(static_cast<VertexId>(v), refine::kNone);
-  return out;
+  return std::move(out_);
+}
+
+Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces) {
+  std::size_t tets = 0;
+  for (const Piece& p : pieces) tets += p.tets.size();
+  Assembly a(m, tets);
+  for (const Piece& p : pieces) a.add(p);
+  return a.finish(m);
 }
 
 }  // namespace pdr::par

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "par/submesh.hpp"
@@ -63,5 +64,30 @@ struct Assembled {
 // flags come with the tets. Throws std::logic_error when the pieces do not glue into a
 // closed mesh (a face left open, or met by more than two tets).
 Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces);
+
+// The same, a piece at a time (rank 0 reads the gathered pieces one by one, so that they
+// are never all held twice): Assembly a(m, tets); a.add(piece)...; a.finish(m). `tets`
+// only reserves.
+class Assembly {
+ public:
+  Assembly(const refine::VolumeMesh& m, std::size_t tets);
+  void add(const Piece& p);
+  Assembled finish(refine::VolumeMesh& m);  // m: the mesh given to the constructor
+
+ private:
+  struct OpenFace {  // a face towards another piece: its vertex ids, sorted
+    std::array<VertexId, 3> key;
+    HalfFace h;
+  };
+  std::size_t n0_;
+  std::vector<Point> points_;
+  std::unordered_map<Gid, VertexId> fresh_;  // vertices made in the parallel phase
+  TetStore st_;
+  std::vector<std::uint8_t> inside_;
+  std::vector<OpenFace> open_;
+  std::vector<VertexId> vmap_;  // add(): the piece's vertices
+  std::vector<TetId> ids_;      // add(): the piece's tets
+  Assembled out_;
+};
 
 }  // namespace pdr::par

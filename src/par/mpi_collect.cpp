@@ -38,10 +38,8 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const auto n = static_cast<std::size_t>(ranks);
-  // A round's counts and offsets are ints: at most INT_MAX bytes in all per round.
-  const std::size_t chunk = std::max<std::size_t>(
-      1, std::min(round_bytes, static_cast<std::size_t>(std::numeric_limits<int>::max()) / n));
-  std::uint64_t size = mine.size(), most = 0;
+  constexpr auto kIntMax = static_cast<std::size_t>(std::numeric_limits<int>::max());
+  std::uint64_t size = mine.size(), most = 0, total = 0;
   std::vector<std::uint64_t> sizes(n);
   MPI_Request r = MPI_REQUEST_NULL;
   check(MPI_Igather(&size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, 0, MPI_COMM_WORLD, &r),
@@ -50,26 +48,38 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t
   check(MPI_Iallreduce(&size, &most, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD, &r),
         "MPI_Iallreduce");
   wait_asleep(r);
+  check(MPI_Iallreduce(&size, &total, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD, &r),
+        "MPI_Iallreduce");
+  wait_asleep(r);
   std::vector<std::size_t> start(n + 1, 0);
   for (std::size_t k = 0; k < n; ++k) start[k + 1] = start[k] + sizes[k];
-  std::vector<std::byte> all(rank == 0 ? start[n] : 0);
-  std::vector<std::byte> round(rank == 0 ? n * chunk : 0);
+  std::vector<std::byte> all(rank == 0 ? total : 0);
+  // One round when it fits (the counts and offsets are ints), straight into `all`; else
+  // rounds of at most `chunk` bytes per rank, n * chunk <= INT_MAX, through a buffer.
+  const std::size_t chunk =
+      total <= kIntMax && most <= round_bytes ? std::max<std::size_t>(most, 1)
+                                              : std::max<std::size_t>(1, std::min(round_bytes, kIntMax / n));
+  const bool one_round = most <= chunk;
+  std::vector<std::byte> buffer;
   std::vector<int> counts(n), offsets(n);
-  for (std::size_t k = 0; k < n; ++k) offsets[k] = static_cast<int>(k * chunk);
-  const auto part = [&](std::uint64_t whole, std::size_t lo) {
-    return whole > lo ? static_cast<int>(std::min<std::uint64_t>(chunk, whole - lo)) : 0;
-  };
   for (std::size_t lo = 0; lo < most; lo += chunk) {
-    for (std::size_t k = 0; k < n; ++k) counts[k] = part(sizes[k], lo);
-    const int mine_now = part(size, lo);
-    check(MPI_Igatherv(mine.data() + (mine_now > 0 ? lo : 0), mine_now, MPI_BYTE, round.data(),
-                       counts.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD, &r),
+    int at = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      counts[k] = sizes[k] > lo ? static_cast<int>(std::min<std::uint64_t>(chunk, sizes[k] - lo)) : 0;
+      offsets[k] = one_round ? static_cast<int>(start[k]) : at;
+      at += counts[k];
+    }
+    const int now = size > lo ? static_cast<int>(std::min<std::uint64_t>(chunk, size - lo)) : 0;
+    if (rank == 0 && !one_round) buffer.resize(static_cast<std::size_t>(at));
+    check(MPI_Igatherv(mine.data() + (now > 0 ? lo : 0), now, MPI_BYTE,
+                       one_round ? all.data() : buffer.data(), counts.data(), offsets.data(),
+                       MPI_BYTE, 0, MPI_COMM_WORLD, &r),
           "MPI_Igatherv");
     wait_asleep(r);
-    if (rank == 0)
+    if (rank == 0 && !one_round)
       for (std::size_t k = 0; k < n; ++k)
         if (counts[k] > 0)
-          std::memcpy(all.data() + start[k] + lo, round.data() + k * chunk,
+          std::memcpy(all.data() + start[k] + lo, buffer.data() + offsets[k],
                       static_cast<std::size_t>(counts[k]));
   }
   return all;
