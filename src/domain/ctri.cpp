@@ -7,6 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "geom/predicates.hpp"
+
 namespace pdr::domain {
 
 namespace {
@@ -63,6 +65,7 @@ Ct2Outcome Ct2::build(std::vector<P2> points,
     const Ct2Outcome r = insert_constraint(c[0], c[1]);
     if (r.status != Ct2Status::Ok) return r;
   }
+  make_delaunay();
   return {};
 }
 
@@ -238,6 +241,34 @@ void Ct2::flip(std::int32_t t, int i) {
   if (na2 >= 0) tris_[na2].n[opposite(tris_[na2], p2, a)] = t2;
   vt_[a] = vt_[p1] = vt_[b] = t;
   vt_[p2] = t2;
+}
+
+void Ct2::make_delaunay() {
+  std::vector<std::pair<std::int32_t, int>> stack;  // edges to test, as (triangle, index)
+  for (std::size_t t = 0; t < tris_.size(); ++t)
+    for (int i = 0; i < 3; ++i)
+      if (tris_[t].n[i] > static_cast<std::int32_t>(t)) stack.emplace_back(static_cast<std::int32_t>(t), i);
+  while (!stack.empty()) {
+    const auto [t, i] = stack.back();
+    stack.pop_back();
+    const Ct2Tri& T = tris_[t];
+    const std::int32_t u = T.n[i];
+    if (u < 0 || T.fixed[i]) continue;
+    const Ct2Tri& U = tris_[u];
+    const std::uint32_t d = U.v[opposite(U, T.v[(i + 1) % 3], T.v[(i + 2) % 3])];
+    if (incircle(pts_[T.v[0]].data(), pts_[T.v[1]].data(), pts_[T.v[2]].data(),
+                 pts_[d].data()) != Sign::Positive)
+      continue;
+    // d strictly inside the circumcircle of a counter-clockwise triangle across an edge:
+    // the quadrilateral is strictly convex, so the flip keeps both triangles
+    // counter-clockwise. Afterwards t = (a, p1, d) and u = (d, p2, a) (flip()): their
+    // four outer edges are tested again.
+    flip(t, i);
+    stack.emplace_back(t, 0);
+    stack.emplace_back(t, 2);
+    stack.emplace_back(u, 0);
+    stack.emplace_back(u, 2);
+  }
 }
 
 Ct2Outcome Ct2::insert_constraint(std::uint32_t u, std::uint32_t v) {

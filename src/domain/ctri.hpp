@@ -9,9 +9,17 @@
 // point is outside the current hull, so it is joined to the hull edges it sees); then each
 // constraint is recovered by flipping the edges that cross it (Sloan 1993: some crossing
 // edge is always flippable, and the walk that collects the crossing edges detects a
-// constraint through a vertex or across another constraint). Not Delaunay: only validity
-// matters here. Region classification floods from the hull across unconstrained edges
-// (Outside), then from each hole point (Hole); the rest is Inside.
+// constraint through a vertex or across another constraint). Then Lawson's flips (exact
+// incircle) make it the constrained Delaunay triangulation: a flip replaces an
+// unconstrained edge whose quadrilateral's fourth vertex lies strictly inside a triangle's
+// circumcircle, and the flips end (Lawson 1977: each lowers the triangulation on the
+// lifting paraboloid). Why Delaunay: a facet read from a rotated part has straight sides
+// whose vertices are collinear only to a few ulps; a triangulation that joins three of them
+// in a sliver has a chord that misses the middle one by ulps on the side of the
+// neighbouring facet, so it crosses that facet although the input does not; the
+// constrained Delaunay triangulation joins them to a vertex across the facet instead.
+// Region classification floods from the hull across unconstrained edges (Outside), then
+// from each hole point (Hole); the rest is Inside.
 //
 // Invariants after build() == Ok: every triangle is counter-clockwise (orient2d > 0);
 // n[i] is the neighbour across the edge opposite v[i] (-1 on the hull) and neighbours
@@ -76,6 +84,7 @@ class Ct2 {
   Ct2Outcome crossing_edges(std::uint32_t u, std::uint32_t v,
                             std::vector<std::array<std::uint32_t, 2>>& out) const;
   void flip(std::int32_t t, int i);
+  void make_delaunay();
   void mark_fixed(std::uint32_t a, std::uint32_t b);
 
   std::vector<P2> pts_;

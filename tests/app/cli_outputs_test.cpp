@@ -19,18 +19,6 @@ using namespace pdr::cli_test;
 
 std::string data(const std::string& name) { return std::string(PDR_DATA_DIR) + "/" + name; }
 
-// Runs a shell command (not pdr) in `dir`, capturing stdout and stderr.
-Outcome shell(const std::string& dir, const std::string& command) {
-  Outcome r;
-  FILE* p = popen(("cd '" + dir + "' && " + command + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, p)) r.out += buf;
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
 // The counts a tool printed as "<label> <points> <tets> <triangles>" lines, by label.
 std::string counts_line(const std::string& out, const std::string& label) {
   std::istringstream in(out);

@@ -40,6 +40,18 @@ inline Outcome run(const std::string& args, bool with_stderr = true) {
   return r;
 }
 
+// Runs a shell command (not pdr) in `dir`, capturing stdout and stderr.
+inline Outcome shell(const std::string& dir, const std::string& command) {
+  Outcome r;
+  FILE* p = popen(("cd '" + dir + "' && " + command + " 2>&1").c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
 inline bool on_path(const std::string& tool) {
   return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
 }

@@ -55,4 +55,29 @@ TEST_F(Cli, SurfaceWithAnOpenEdgeExits2AndWritesNothing) {
   EXPECT_TRUE(left_behind("x").empty());
 }
 
+// Gmsh's surfaces of rotated OpenCASCADE solids (a file written by another tool, as users
+// have them): a box, a box with a cylindrical hole through it, and the same with a
+// spherical void. Their sides are straight only to a few ulps; each meshes (exit 0) and
+// passes the check. Before the facet triangulations were constrained Delaunay, the first
+// two were refused (exit 2: two facets said to cross).
+TEST_F(Cli, GmshSurfacesOfRotatedSolidsMesh) {
+  if (!on_path("gmsh")) GTEST_SKIP() << "gmsh is not on PATH";
+  const char* solids[] = {
+      "Box(1) = {0,0,0, 2,1,1};",
+      "Box(1) = {0,0,0, 2,1,1}; Cylinder(2) = {0.5,0.5,-0.1, 0,0,1.2, 0.25};\n"
+      "BooleanDifference{ Volume{1}; Delete; }{ Volume{2}; Delete; }",
+      "Box(1) = {0,0,0, 2,1,1}; Cylinder(2) = {0.5,0.5,-0.1, 0,0,1.2, 0.25};\n"
+      "Sphere(3) = {1.5,0.5,0.5, 0.3};\n"
+      "BooleanDifference{ Volume{1}; Delete; }{ Volume{2,3}; Delete; }"};
+  for (const char* solid : solids) {
+    SCOPED_TRACE(solid);
+    write("s.geo", std::string("SetFactory(\"OpenCASCADE\");\n") + solid +
+                       "\nRotate {{1,1,0},{0,0,0}, 0.3} { Volume{1}; }\nMesh.MeshSizeMax = 0.3;\n");
+    const Outcome g = shell(path(""), "gmsh -2 s.geo -format stl -o s.stl");
+    ASSERT_EQ(g.code, 0) << g.out;
+    const auto j = mesh_json(path("s.stl") + " -o " + path("m") + " --max-volume 0.005");
+    EXPECT_EQ(j.at("check"), "pass");
+  }
+}
+
 }  // namespace

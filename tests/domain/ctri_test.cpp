@@ -1,5 +1,6 @@
-// The constrained triangulation of facets (domain/ctri.hpp): its invariants on degenerate
-// point sets (grids: many collinear and cocircular points) with and without constraints.
+// The constrained triangulation of facets (domain/ctri.hpp): its invariants, and the
+// constrained Delaunay property, on degenerate point sets (grids: many collinear and
+// cocircular points) with and without constraints.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <set>
 
 #include "domain/ctri.hpp"
+#include "geom/predicates.hpp"
 
 namespace pdr::domain {
 namespace {
@@ -57,6 +59,23 @@ void check_invariants(const Ct2& ct) {
   }
 }
 
+// Constrained Delaunay: across every unconstrained edge, the fourth vertex is not strictly
+// inside the triangle's circumcircle.
+void check_delaunay(const Ct2& ct) {
+  const auto& t = ct.tris();
+  const auto& p = ct.points();
+  for (std::size_t i = 0; i < t.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t n = t[i].n[k];
+      if (n < 0 || t[i].fixed[k]) continue;
+      std::uint32_t d = 0;
+      for (const std::uint32_t v : t[n].v)
+        if (v != t[i].v[(k + 1) % 3] && v != t[i].v[(k + 2) % 3]) d = v;
+      RC_ASSERT(incircle(p[t[i].v[0]].data(), p[t[i].v[1]].data(), p[t[i].v[2]].data(),
+                         p[d].data()) != Sign::Positive);
+    }
+}
+
 // Distinct points of a small integer grid, scaled.
 rc::Gen<std::vector<P2>> grid_points() {
   return rc::gen::map(rc::gen::container<std::vector<std::pair<int, int>>>(
@@ -79,6 +98,7 @@ RC_GTEST_PROP(PlcCt2, TriangulatesTheConvexHull, ()) {
   }
   RC_ASSERT(r.status == Ct2Status::Ok);
   check_invariants(ct);
+  check_delaunay(ct);
   double a = 0;
   std::set<std::uint32_t> used;
   for (const Ct2Tri& t : ct.tris()) {
@@ -123,6 +143,7 @@ RC_GTEST_PROP(PlcCt2, RecoversThePolygonOfAStar, ()) {
   }
   RC_ASSERT(r.status == Ct2Status::Ok);
   check_invariants(ct);
+  check_delaunay(ct);
   const std::vector<Ct2Region> reg = ct.regions({});
   double inside = 0;
   for (std::size_t t = 0; t < ct.tris().size(); ++t)

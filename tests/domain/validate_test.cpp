@@ -3,6 +3,9 @@
 // components and orientation the later stages rely on.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
+#include <random>
 #include <sstream>
 
 #include <cmath>
@@ -158,6 +161,71 @@ Plc rotated_triangle_box() {
     x = {y[0], e * y[1] - g * y[2], g * y[1] + e * y[2]};
   }
   return p;
+}
+
+// A box whose sides are polygons with k - 1 extra vertices on each edge (a surface mesher's
+// side, merged into one facet), rotated: the vertices along an edge are collinear only to
+// a few ulps. The facets meet only along their common edges, so the domain is valid; a
+// facet triangulation that joined three vertices of an edge in a sliver crossed the next
+// facet by ulps (a Gmsh surface of a rotated box was refused so).
+Plc rotated_subdivided_box(std::uint32_t k, const std::array<double, 4>& q, const Point& size) {
+  Plc p;
+  std::map<std::array<std::uint32_t, 3>, std::uint32_t> index;  // grid point -> vertex
+  const auto vertex = [&](std::array<std::uint32_t, 3> g) {
+    const auto [it, fresh] = index.try_emplace(g, static_cast<std::uint32_t>(p.points.size()));
+    if (fresh) {
+      const Point x{size[0] * g[0] / k, size[1] * g[1] / k, size[2] * g[2] / k};
+      // Rotation by the unit quaternion (w, x, y, z).
+      const double w = q[0], a = q[1], b = q[2], c = q[3];
+      const double r[3][3] = {{1 - 2 * (b * b + c * c), 2 * (a * b - c * w), 2 * (a * c + b * w)},
+                              {2 * (a * b + c * w), 1 - 2 * (a * a + c * c), 2 * (b * c - a * w)},
+                              {2 * (a * c - b * w), 2 * (b * c + a * w), 1 - 2 * (a * a + b * b)}};
+      Point y{};
+      for (int i = 0; i < 3; ++i) y[i] = r[i][0] * x[0] + r[i][1] * x[1] + r[i][2] * x[2];
+      p.points.push_back(y);
+      p.point_lines.push_back(kPointLine + p.points.size());
+    }
+    return it->second;
+  };
+  // Each side: the boundary of the k x k grid on the face normal to `axis` at `at`.
+  for (int axis = 0; axis < 3; ++axis)
+    for (const std::uint32_t at : {0u, k}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      std::vector<std::array<std::uint32_t, 2>> ring;
+      for (std::uint32_t i = 0; i < k; ++i) ring.push_back({i, 0});
+      for (std::uint32_t i = 0; i < k; ++i) ring.push_back({k, i});
+      for (std::uint32_t i = k; i > 0; --i) ring.push_back({i, k});
+      for (std::uint32_t i = k; i > 0; --i) ring.push_back({0, i});
+      PlcFacet f;
+      f.line = kFacetLine + p.facets.size();
+      std::vector<std::uint32_t> poly;
+      for (const auto& [s, t] : ring) {
+        std::array<std::uint32_t, 3> g{};
+        g[static_cast<std::size_t>(axis)] = at;
+        g[static_cast<std::size_t>(u)] = s;
+        g[static_cast<std::size_t>(v)] = t;
+        poly.push_back(vertex(g));
+      }
+      f.polygons.push_back(std::move(poly));
+      p.facets.push_back(std::move(f));
+    }
+  return p;
+}
+
+TEST(PlcValidate, RotatedBoxesWithSubdividedSidesAreValid) {
+  std::mt19937_64 rng(20261126);
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<std::uint32_t> subdivisions(2, 9);
+  std::uniform_real_distribution<double> side(0.3, 3);
+  for (int n = 0; n < 60; ++n) {
+    std::array<double, 4> q{normal(rng), normal(rng), normal(rng), normal(rng)};
+    const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (double& c : q) c /= len;
+    const std::uint32_t k = subdivisions(rng);
+    const Point size{side(rng), side(rng), side(rng)};
+    const Plc p = rotated_subdivided_box(k, q, size);
+    EXPECT_EQ(error_of(p), "") << "case " << n << ": k = " << k;
+  }
 }
 
 TEST(PlcValidate, FacetsCoplanarWithinToleranceShareOnePlane) {
