@@ -15,6 +15,7 @@
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "check/explain.hpp"
+#include "domain/domain.hpp"
 #include "check/fields.hpp"
 #include "io/mesh_io.hpp"
 #include "io/vtu.hpp"
@@ -35,6 +36,10 @@ CLI::App* add_check_command(CLI::App& app, CheckArgs& chk) {
       ->check(CLI::NonNegativeNumber);
   cchk->add_flag("--json", chk.json, "Print the report as one JSON object");
   cchk->add_option("--threads", chk.threads, "Worker threads")->check(CLI::Range(1, 256));
+  cchk->add_option("--planarity-tolerance", chk.planarity_tolerance,
+                   "As pdr mesh's: the domain's facets may deviate T facet diameters from a "
+                   "plane, and vertices within 2T of a facet's plane count as on it")
+      ->check(CLI::Range(1e-16, 1e-3));
   cchk->add_option("--max-reported", chk.max_reported, "Findings listed per check");
   cchk->add_option("--explain", chk.explain,
                    "Describe tet T (0-based, as in the report and ParaView's cell ids) in full");
@@ -62,7 +67,9 @@ int run_check(const CheckArgs& args) {
   io::ReadInfo info;
   const MeshData mesh = io::read_mesh(args.mesh, &info);
   std::optional<Plc> domain;
-  if (args.domain) domain = io::read_domain(*args.domain);
+  if (args.domain)
+    domain = io::read_domain(*args.domain, args.planarity_tolerance.value_or(
+                                               domain::PlcOptions{}.planarity_tolerance));
   timer.lap("read");
   if (args.explain && *args.explain >= mesh.tets.size()) {
     std::cerr << "pdr check: --explain " << *args.explain << ": the mesh has "
@@ -74,6 +81,7 @@ int run_check(const CheckArgs& args) {
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
   opt.threads = args.threads;
+  opt.relative_tolerance = check_tolerance(args.planarity_tolerance, opt.relative_tolerance);
   if (progress.enabled())
     opt.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
   const bool every_finding = args.explain || args.vtu;

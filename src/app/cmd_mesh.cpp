@@ -111,6 +111,11 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   c->add_flag("--audit", a.options.audit, "Check Lemma 1's invariants after every insertion");
   c->add_flag("--json", a.json, "Print the summary as one JSON object");
   c->add_option("--seed", a.seed, "Seed of the initial insertion order");
+  c->add_option("--planarity-tolerance", a.planarity_tolerance,
+                "Accept facets whose vertices lie within T facet diameters of a plane "
+                "(default 1e-9; TetGen's -T); the check then counts vertices within 2T as on "
+                "a facet")
+      ->check(CLI::Range(1e-16, 1e-3));
   c->add_option("--max-vertices", a.options.max_vertices, "Vertex cap (0: derived)");
   c->add_option("--surface-sizing", a.surface_sizing,
                 "Initial surface mesh: uniform (paper 2.1, global d), graded (each segment "
@@ -155,7 +160,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   progress.phase("analyze");
   check_range(plc);
   const auto formats = parse_formats(args.formats);
-  domain::DomainAnalysis an = domain::analyze(plc);
+  domain::PlcOptions plc_options;
+  if (args.planarity_tolerance) plc_options.planarity_tolerance = *args.planarity_tolerance;
+  domain::DomainAnalysis an = domain::analyze(plc, plc_options);
   summary.set("domain", plc.source);
   summary.set("admissible", an.report.admissible);
   const nlohmann::json report = domain::to_json(an.report);
@@ -279,6 +286,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     check::Options co;
     co.ratio_bound = opt.ratio;
     co.threads = args.threads;
+    co.relative_tolerance = check_tolerance(args.planarity_tolerance, co.relative_tolerance);
     if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
@@ -355,7 +363,8 @@ namespace {
 int mesh_and_report(const MeshArgs& args) {
   Summary summary;
   summary.set("command", "mesh");
-  const Plc plc = io::read_domain(args.domain);
+  const Plc plc =
+      io::read_domain(args.domain, args.planarity_tolerance.value_or(domain::PlcOptions{}.planarity_tolerance));
   std::string failure;
   const int code = mesh_plc_reported(plc, args, summary, failure);
   summary.print(args.json);

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,7 @@ struct CheckArgs {
   std::size_t max_reported = 20;
   std::optional<std::size_t> explain;  // --explain T: describe tet T in full
   std::optional<std::string> vtu;      // --vtu OUT.vtu: the mesh with per-tet check fields
+  std::optional<double> planarity_tolerance;  // as MeshArgs's
 };
 // Registers `pdr check` and its options on `app`, filling `args` when parsed.
 CLI::App* add_check_command(CLI::App& app, CheckArgs& args);
@@ -54,8 +56,17 @@ struct MeshArgs {
   std::uint64_t inject_latency_us = 0; // mpirun: each message held this long
   std::size_t submeshes = 0;          // mpirun: submeshes of M_o, >= ranks (0: one per rank)
   surface::SurfaceSizing surface_sizing = surface::SurfaceSizing::Auto;  // surface/init.hpp
+  // --planarity-tolerance: the domain analysis's (domain::PlcOptions), and twice it the
+  // check's (check::Options::relative_tolerance, when larger); absent: their defaults.
+  std::optional<double> planarity_tolerance;
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
+// The check's relative tolerance under --planarity-tolerance T: vertices within 2T facet
+// diameters of a facet's plane count as on it (the input's facets deviate up to T, the
+// vertices the mesher puts on them by rounding); `fallback` without the option.
+inline double check_tolerance(const std::optional<double>& planarity, double fallback) {
+  return planarity ? std::max(fallback, 2 * *planarity) : fallback;
+}
 int run_mesh(const MeshArgs& args);
 // The mesher on a PLC (shared with the default job and the Python module); fills
 // `summary`, returns an exit code; throws InputError, RefineError, SurfaceError. Writes the

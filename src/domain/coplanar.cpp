@@ -73,7 +73,7 @@ void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
            number(fit.plane.max_deviation) +
            " facet diameters off the best-fit plane of this facet (tolerance " + number(tol) +
            "); fix the coordinates, split the facet into planar facets, or raise the "
-           "planarity tolerance");
+           "planarity tolerance (pdr mesh --planarity-tolerance)");
     DomainFacet& F = dom.facets[f];
     F.is_face = true;
     F.plane = fit.plane;

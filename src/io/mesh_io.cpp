@@ -30,16 +30,17 @@ MeshData read_mesh(const std::string& path, ReadInfo* info) {
                             "PREFIX.ele), or a .ele, .node, .msh, .mesh or .vtu file");
 }
 
-Plc read_domain(const std::string& path) {
+Plc read_domain(const std::string& path, double planarity_tolerance) {
   const std::string ext = lower_extension(path);
   if (ext == ".poly") return read_tetgen_poly(path);
   if (ext == ".smesh") return read_tetgen_smesh(path);
   if (ext == ".node") return read_tetgen_node_domain(path);
-  if (ext == ".off") return surface_to_plc(read_off(path));
-  if (ext == ".stl") return surface_to_plc(read_stl(path));
-  if (ext == ".ply") return surface_to_plc(read_ply(path));
-  if (ext == ".msh") return surface_to_plc(read_gmsh_surface(path));
-  if (ext == ".mesh") return surface_to_plc(read_medit_surface(path));
+  const double tol = planarity_tolerance;
+  if (ext == ".off") return surface_to_plc(read_off(path), tol);
+  if (ext == ".stl") return surface_to_plc(read_stl(path), tol);
+  if (ext == ".ply") return surface_to_plc(read_ply(path), tol);
+  if (ext == ".msh") return surface_to_plc(read_gmsh_surface(path), tol);
+  if (ext == ".mesh") return surface_to_plc(read_medit_surface(path), tol);
   throw InputError(path, 0, "unknown domain format: expected a .poly, .smesh, .node, .off, "
                             ".stl, .ply, .mesh or .msh file");
 }

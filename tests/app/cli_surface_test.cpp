@@ -4,6 +4,7 @@
 // file:line and writes nothing.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <random>
@@ -57,6 +58,37 @@ TEST_F(Cli, SurfaceWithAnOpenEdgeExits2AndWritesNothing) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("open.off:11: face 1: closed surface:"), std::string::npos) << r.out;
   EXPECT_TRUE(left_behind("x").empty());
+}
+
+// A part far from the origin (CAD and survey coordinates): the unit box of 2 x 2 grids of
+// triangles, rotated and moved by 1e7, where the rounding of a coordinate (2e-9) is more
+// than 1e-9 of a side. The default planarity tolerance refuses it with a message naming
+// the option; --planarity-tolerance 1e-8 meshes it, and `pdr check` with the same option
+// passes the mesh.
+TEST_F(Cli, PlanarityToleranceOptionAcceptsAFarPart) {
+  pdr::io::test::Shape box = pdr::io::test::box_grid();
+  std::vector<std::vector<std::uint32_t>> tris;
+  for (const auto& f : box.faces) {
+    tris.push_back({f[0], f[1], f[2]});
+    tris.push_back({f[0], f[2], f[3]});
+  }
+  box.faces = tris;
+  const double c = std::cos(0.7), d = std::sin(0.7), e = std::cos(1.1), g = std::sin(1.1);
+  for (pdr::Point& x : box.points) {
+    const pdr::Point y{c * x[0] - d * x[1], d * x[0] + c * x[1], x[2]};
+    x = {y[0] + 1e7, e * y[1] - g * y[2] + 7e6, g * y[1] + e * y[2] - 3e6};
+  }
+  write("far.off", off_text(box));
+  const Outcome refused = run("mesh " + path("far.off") + " -o " + path("f"));
+  EXPECT_EQ(refused.code, 2) << refused.out;
+  EXPECT_NE(refused.out.find("planar facet"), std::string::npos) << refused.out;
+  EXPECT_NE(refused.out.find("--planarity-tolerance"), std::string::npos) << refused.out;
+  const auto j = mesh_json(path("far.off") + " -o " + path("f") +
+                           " --max-volume 0.01 --planarity-tolerance 1e-8");
+  EXPECT_EQ(j.at("check"), "pass");
+  const Outcome c1 = run("check " + path("f") + " --domain " + path("far.off") +
+                         " --planarity-tolerance 1e-8");
+  EXPECT_EQ(c1.code, 0) << c1.out;
 }
 
 // Gmsh's surfaces of rotated OpenCASCADE solids (a file written by another tool, as users
