@@ -27,10 +27,9 @@ struct Outcome {
   std::string out;  // stdout (and stderr, unless asked otherwise)
 };
 
-// with_stderr: capture stderr too (false: stdout only, e.g. to parse --json).
-inline Outcome run(const std::string& args, bool with_stderr = true) {
+// Runs the shell command `cmd`, capturing what it prints on stdout.
+inline Outcome capture(const std::string& cmd) {
   Outcome r;
-  const std::string cmd = std::string(PDR_BINARY) + " " + args + (with_stderr ? " 2>&1" : "");
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
   std::array<char, 4096> buf{};
@@ -40,16 +39,14 @@ inline Outcome run(const std::string& args, bool with_stderr = true) {
   return r;
 }
 
+// with_stderr: capture stderr too (false: stdout only, e.g. to parse --json).
+inline Outcome run(const std::string& args, bool with_stderr = true) {
+  return capture(std::string(PDR_BINARY) + " " + args + (with_stderr ? " 2>&1" : ""));
+}
+
 // Runs a shell command (not pdr) in `dir`, capturing stdout and stderr.
 inline Outcome shell(const std::string& dir, const std::string& command) {
-  Outcome r;
-  FILE* p = popen(("cd '" + dir + "' && " + command + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return capture("cd '" + dir + "' && " + command + " 2>&1");
 }
 
 inline bool on_path(const std::string& tool) {
