@@ -15,7 +15,6 @@
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "check/explain.hpp"
-#include "domain/domain.hpp"
 #include "check/fields.hpp"
 #include "io/mesh_io.hpp"
 #include "io/vtu.hpp"
@@ -68,8 +67,7 @@ int run_check(const CheckArgs& args) {
   const MeshData mesh = io::read_mesh(args.mesh, &info);
   std::optional<Plc> domain;
   if (args.domain)
-    domain = io::read_domain(*args.domain, args.planarity_tolerance.value_or(
-                                               domain::PlcOptions{}.planarity_tolerance));
+    domain = io::read_domain(*args.domain, plc_options(args.planarity_tolerance).planarity_tolerance);
   timer.lap("read");
   if (args.explain && *args.explain >= mesh.tets.size()) {
     std::cerr << "pdr check: --explain " << *args.explain << ": the mesh has "

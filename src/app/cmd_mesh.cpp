@@ -160,9 +160,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   progress.phase("analyze");
   check_range(plc);
   const auto formats = parse_formats(args.formats);
-  domain::PlcOptions plc_options;
-  if (args.planarity_tolerance) plc_options.planarity_tolerance = *args.planarity_tolerance;
-  domain::DomainAnalysis an = domain::analyze(plc, plc_options);
+  domain::DomainAnalysis an = domain::analyze(plc, plc_options(args.planarity_tolerance));
   summary.set("domain", plc.source);
   summary.set("admissible", an.report.admissible);
   const nlohmann::json report = domain::to_json(an.report);
@@ -364,7 +362,7 @@ int mesh_and_report(const MeshArgs& args) {
   Summary summary;
   summary.set("command", "mesh");
   const Plc plc =
-      io::read_domain(args.domain, args.planarity_tolerance.value_or(domain::PlcOptions{}.planarity_tolerance));
+      io::read_domain(args.domain, plc_options(args.planarity_tolerance).planarity_tolerance);
   std::string failure;
   const int code = mesh_plc_reported(plc, args, summary, failure);
   summary.print(args.json);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/summary.hpp"
+#include "domain/domain.hpp"
 #include "mesh/mesh_data.hpp"
 #include "mesh/plc.hpp"
 #include "refine/seq_refinement.hpp"
@@ -61,6 +62,12 @@ struct MeshArgs {
   std::optional<double> planarity_tolerance;
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
+// The domain analysis's options under --planarity-tolerance (absent: the defaults).
+inline domain::PlcOptions plc_options(const std::optional<double>& planarity) {
+  domain::PlcOptions o;
+  if (planarity) o.planarity_tolerance = *planarity;
+  return o;
+}
 // The check's relative tolerance under --planarity-tolerance T: vertices within 2T facet
 // diameters of a facet's plane count as on it (the input's facets deviate up to T, the
 // vertices the mesher puts on them by rounding); `fallback` without the option.

@@ -39,20 +39,17 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const auto n = static_cast<std::size_t>(ranks);
   constexpr auto kIntMax = static_cast<std::size_t>(std::numeric_limits<int>::max());
-  std::uint64_t size = mine.size(), most = 0, total = 0;
+  // Every rank learns every size, so all agree on the rounds.
+  const std::uint64_t size = mine.size();
   std::vector<std::uint64_t> sizes(n);
   MPI_Request r = MPI_REQUEST_NULL;
-  check(MPI_Igather(&size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, 0, MPI_COMM_WORLD, &r),
-        "MPI_Igather");
-  wait_asleep(r);
-  check(MPI_Iallreduce(&size, &most, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD, &r),
-        "MPI_Iallreduce");
-  wait_asleep(r);
-  check(MPI_Iallreduce(&size, &total, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD, &r),
-        "MPI_Iallreduce");
+  check(MPI_Iallgather(&size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD, &r),
+        "MPI_Iallgather");
   wait_asleep(r);
   std::vector<std::size_t> start(n + 1, 0);
   for (std::size_t k = 0; k < n; ++k) start[k + 1] = start[k] + sizes[k];
+  const std::size_t total = start[n];
+  const std::size_t most = *std::max_element(sizes.begin(), sizes.end());
   std::vector<std::byte> all(rank == 0 ? total : 0);
   // One round when it fits (the counts and offsets are ints), straight into `all`; else
   // rounds of at most `chunk` bytes per rank, n * chunk <= INT_MAX, through a buffer.
@@ -100,8 +97,6 @@ std::vector<T> gather_values(const std::vector<T>& mine) {
 }  // namespace
 
 std::vector<Point> gather_points(const std::vector<Point>& mine) { return gather_values(mine); }
-
-
 
 std::vector<RankFigures> gather_figures(const RankFigures& mine) {
   return gather_values(std::vector<RankFigures>{mine});

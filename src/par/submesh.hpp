@@ -127,9 +127,9 @@ class Submesh {
   Gid gid(VertexId v) const { return v == kGhostVertex ? kGhostGid : gids_[v]; }
   // A byte per vertex that the submesh does not read: given to M_o's vertices by
   // extract(), it travels with the vertex; a vertex made by insert() gets the tag given
-  // there (the
-  // refinement: where the vertex lies on ∂Ω, so that most edges and faces are known to be
-  // no element of D without a lookup, par/refinement_rules.hpp). 0 for the ghost.
+  // there (the refinement: where the vertex lies on ∂Ω, so that most edges and faces are
+  // known to be no element of D without a lookup, par/refinement_rules.hpp). 0 for the
+  // ghost.
   std::uint8_t tag(VertexId v) const { return v < tags_.size() ? tags_[v] : 0; }
   Gid tet_gid(TetId t) const { return tet_gid_[t]; }
   // The real tet with global id g, or kNoTet when it is not here.

@@ -99,13 +99,13 @@ class Refiner {
       ++res_.stats.conformity_breaks;  // T_o (refine/initial.hpp)
       conformity_.start(m_);
     }
-    if (o_.start_tets) {
-      for (const TetId t : *o_.start_tets)
-        if (t < s.slots() && s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
-    } else {
-      for (TetId t = 0; t < s.slots(); ++t)
-        if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
-    }
+    const auto seed = [&](TetId t) {
+      if (t < s.slots() && s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t)) consider(t);
+    };
+    if (o_.start_tets)
+      for (const TetId t : *o_.start_tets) seed(t);
+    else
+      for (TetId t = 0; t < s.slots(); ++t) seed(t);
     for (;;) {
       if (const auto done = refine_encroached()) {
         if (!*done) break;  // the budget is spent
