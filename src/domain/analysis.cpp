@@ -69,7 +69,6 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
   r.regions = plc.regions.size();
   bool first = true;
   for (std::uint32_t v = 0; v < plc.points.size(); ++v) {
-    if (!dom.on_boundary[v]) continue;
     for (int k = 0; k < 3; ++k) {
       r.bbox_lo[k] = first ? plc.points[v][k] : std::min(r.bbox_lo[k], plc.points[v][k]);
       r.bbox_hi[k] = first ? plc.points[v][k] : std::max(r.bbox_hi[k], plc.points[v][k]);

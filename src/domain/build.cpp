@@ -134,7 +134,6 @@ void build_structure(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
   const std::size_t nv = plc.points.size();
   dom.vertex_segments.assign(nv, {});
   dom.vertex_facets.assign(nv, {});
-  dom.on_boundary.assign(nv, false);
   for (std::size_t f = 0; f < dom.facets.size(); ++f) {
     DomainFacet& F = dom.facets[f];
     const auto fid = static_cast<std::uint32_t>(f);
@@ -165,10 +164,8 @@ void build_structure(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
     F.vertices = verts;
     std::sort(F.segments.begin(), F.segments.end());
     F.segments.erase(std::unique(F.segments.begin(), F.segments.end()), F.segments.end());
-    for (std::uint32_t v : verts) {
-      dom.on_boundary[v] = true;
-      if (F.is_face) dom.vertex_facets[v].push_back(fid);
-    }
+    if (F.is_face)
+      for (std::uint32_t v : verts) dom.vertex_facets[v].push_back(fid);
   }
   for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
     DomainSegment& S = dom.segments[s];
@@ -220,10 +217,6 @@ std::optional<std::uint32_t> PlcDomain::find_segment(std::uint32_t a, std::uint3
 std::size_t PlcDomain::face_count() const {
   return static_cast<std::size_t>(
       std::count_if(facets.begin(), facets.end(), [](const DomainFacet& f) { return f.is_face; }));
-}
-
-std::size_t PlcDomain::vertex_count() const {
-  return static_cast<std::size_t>(std::count(on_boundary.begin(), on_boundary.end(), true));
 }
 
 PlcDomain build_domain(const Plc& plc, const PlcOptions& options) {

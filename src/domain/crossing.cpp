@@ -2,7 +2,8 @@
 // Ω is a polyhedral domain whose boundary components are vertices, segments and facets).
 //
 // The items are the triangles of every face, the standalone segments (segments on no
-// face) and the stray vertices (1-vertex polygons on no segment or face). A bounding-volume
+// face) and the stray vertices (on no segment or face: 1-vertex polygons, and nodes that no
+// facet lists, which TetGen inserts too). A bounding-volume
 // hierarchy over their boxes enumerates the pairs whose boxes overlap (exact, closed
 // boxes); each pair is decided by the exact tests of domain/intersect.hpp. Triangles of one
 // face are not compared: a valid constrained triangulation of the face's chart does not
@@ -56,8 +57,10 @@ std::size_t line_of(const PlcDomain& dom, const Item& it) {
     for (int i = 0; i < n; ++i)
       if (!has(y, x.v[i]) && point_in_triangle(pts[y.v[0]], pts[y.v[1]], pts[y.v[2]], pts[x.v[i]]))
         fail(dom.plc, line_of(dom, x),
-             "non-crossing components: " + vertex_name(dom.plc, x.v[i]) + " of " +
-                 describe(dom, x) + " lies on " + describe(dom, y) +
+             "non-crossing components: " +
+                 (x.kind == Item::Vertex ? describe(dom, x)
+                                         : vertex_name(dom.plc, x.v[i]) + " of " + describe(dom, x)) +
+                 " lies on " + describe(dom, y) +
                  " but is not one of its vertices; list it in that facet (as a 1-vertex "
                  "polygon, or on its polygons) or fix the coordinates");
   }
@@ -109,7 +112,7 @@ void check_crossings(const PlcDomain& dom) {
   for (const DomainSegment& s : dom.segments)
     if (s.sides.empty()) items.push_back({Item::Segment, 0, {s.a, s.b, 0}});
   for (std::uint32_t v = 0; v < pts.size(); ++v)
-    if (dom.on_boundary[v] && dom.vertex_segments[v].empty() && dom.vertex_facets[v].empty())
+    if (dom.vertex_segments[v].empty() && dom.vertex_facets[v].empty())
       items.push_back({Item::Vertex, 0, {v, 0, 0}});
   std::vector<Box> boxes(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {

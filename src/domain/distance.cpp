@@ -68,11 +68,10 @@ struct Primitives {
 Primitives primitives(const PlcDomain& dom) {
   const std::vector<Point>& pts = dom.plc.points;
   Primitives out;
-  for (std::uint32_t v = 0; v < pts.size(); ++v)
-    if (dom.on_boundary[v]) {
-      out.prims.push_back({ComponentKind::Vertex, v, 0});
-      out.boxes.emplace_back().add(pts[v]);
-    }
+  for (std::uint32_t v = 0; v < pts.size(); ++v) {
+    out.prims.push_back({ComponentKind::Vertex, v, 0});
+    out.boxes.emplace_back().add(pts[v]);
+  }
   for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
     out.prims.push_back({ComponentKind::Segment, s, 0});
     Box& b = out.boxes.emplace_back();
@@ -352,8 +351,7 @@ LocalFeatureSizes local_feature_sizes_brute(const PlcDomain& dom) {
 FeatureSize feature_size_brute(const PlcDomain& dom) {
   const std::vector<Point>& pts = dom.plc.points;
   std::vector<std::uint32_t> verts, faces;
-  for (std::uint32_t v = 0; v < pts.size(); ++v)
-    if (dom.on_boundary[v]) verts.push_back(v);
+  for (std::uint32_t v = 0; v < pts.size(); ++v) verts.push_back(v);
   for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
     if (dom.facets[f].is_face) faces.push_back(f);
   const auto V = ComponentKind::Vertex, S = ComponentKind::Segment, F = ComponentKind::Facet;

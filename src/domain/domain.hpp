@@ -9,6 +9,9 @@
 //     share their common pieces), unique and undirected (a < b);
 //   - each face is triangulated (triangles with input vertices as corners, conforming to
 //     its segments, holes removed): the facet "as the kernel sees it";
+//   - every input vertex is a component: a node that no facet lists is an isolated vertex,
+//     as a 1-vertex polygon is (TetGen inserts such nodes of a .poly too; the surface
+//     readers list only the vertices their faces use);
 //   - components meet only in shared vertices and segments (no crossing facets, segments
 //     or stray vertices);
 //   - every segment bounds an even number of facet sides (a segment inside a face counts
@@ -83,13 +86,12 @@ struct PlcDomain {
   std::vector<DomainSegment> segments;               // sorted by (a, b)
   std::vector<std::vector<std::uint32_t>> vertex_segments;  // per vertex, sorted
   std::vector<std::vector<std::uint32_t>> vertex_facets;    // faces containing it, sorted
-  std::vector<bool> on_boundary;                     // vertex is a component of the boundary
   std::size_t shells = 0;                            // closed surface components
   std::vector<std::uint32_t> tolerance_facets;       // faces planar only within tolerance
 
   std::optional<std::uint32_t> find_segment(std::uint32_t a, std::uint32_t b) const;
   std::size_t face_count() const;
-  std::size_t vertex_count() const;  // boundary vertices
+  std::size_t vertex_count() const { return plc.points.size(); }  // every one a component
 };
 
 }  // namespace pdr::domain

@@ -11,7 +11,6 @@ VolumeMesh build_initial(SurfaceMesh surf, std::span<const Point> holes, std::ui
   std::vector<Point> pts;
   m.s2d.assign(surf.vertex_count(), kNone);
   for (std::uint32_t v = 0; v < surf.vertex_count(); ++v) {
-    if (surf.home(v).kind == HomeKind::Unused) continue;
     m.s2d[v] = static_cast<std::uint32_t>(pts.size());
     m.d2s.push_back(v);
     pts.push_back(surf.point(v));

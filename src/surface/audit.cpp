@@ -68,10 +68,6 @@ void check_incidences(const SurfaceMesh& m, SurfaceAudit& out) {
       case HomeKind::Input:
         if (h.id != v) out.add("surface.homes: input " + who + " has home id " + std::to_string(h.id));
         break;
-      case HomeKind::Unused:
-        if (!segs[v].empty() || !tris[v].empty())
-          out.add("surface.homes: unused " + who + " is in a subsegment or subfacet");
-        break;
       case HomeKind::Segment:
         if (h.id >= m.segments.size() || segs[v].size() != 2 ||
             m.subsegment(segs[v][0]).segment != h.id || m.subsegment(segs[v][1]).segment != h.id) {
@@ -262,8 +258,7 @@ constexpr double kMargin = 0x1p-40;
 class SortedVertices {
  public:
   explicit SortedVertices(const SurfaceMesh& m) : m_(m) {
-    for (std::uint32_t v = 0; v < m.vertex_count(); ++v)
-      if (m.home(v).kind != HomeKind::Unused) order_.push_back(v);
+    for (std::uint32_t v = 0; v < m.vertex_count(); ++v) order_.push_back(v);
     std::sort(order_.begin(), order_.end(),
               [&](std::uint32_t a, std::uint32_t b) { return m.point(a)[0] < m.point(b)[0]; });
   }

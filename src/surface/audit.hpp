@@ -5,7 +5,7 @@
 // Structure (surface/audit.cpp):
 //   surface.homes        input vertices keep their ids; a segment vertex lies on that
 //                        segment's chain, a facet vertex only in that facet's subfacets;
-//                        Unused points are in nothing; the incidence lists are exact.
+//                        the incidence lists are exact.
 //   surface.chains       each segment's subsegments form one chain from a to b whose
 //                        vertices advance strictly along b - a (exact dot products).
 //   surface.orientation  every subfacet is counter-clockwise in its facet's chart.

@@ -25,7 +25,7 @@ SurfaceMesh build_surface(const domain::PlcDomain& dom) {
   SurfaceMesh m;
   m.source = plc.source;
   for (std::uint32_t v = 0; v < plc.points.size(); ++v)
-    m.add_vertex(plc.points[v], {dom.on_boundary[v] ? HomeKind::Input : HomeKind::Unused, v});
+    m.add_vertex(plc.points[v], {HomeKind::Input, v});
   for (std::uint32_t s = 0; s < dom.segments.size(); ++s) {
     const domain::DomainSegment& S = dom.segments[s];
     m.segments.push_back({S.a, S.b, S.facets});

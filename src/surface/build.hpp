@@ -6,8 +6,8 @@
 // facets, facet charts and boundaries, source lines), takes each face's triangulation from
 // the domain analysis (input vertices as corners, conforming to the segments, holes
 // removed: domain/domain.hpp) and makes it constrained Delaunay by Lawson flips
-// (make_facet_delaunay, surface/build.cpp). Input points on no segment or facet keep their
-// ids, with home Unused.
+// (make_facet_delaunay, surface/build.cpp). Input points on no segment or facet (isolated
+// vertices) keep their ids and home Input, like every input vertex.
 // Constrained Delaunay is what a region needs before its segments are refined; once no
 // subsegment is encroached (paper §2.1 step 1, for admissible domains) every subsegment is
 // an edge of the unconstrained Delaunay triangulation of the facet's vertices (its closed

@@ -4,7 +4,7 @@
 // Contents:
 //   - vertices: the input vertices first, with the same ids as the Plc, then the added
 //     ones; each has a Home: the input vertex itself, the interior of segment s, or the
-//     interior of facet f (input points that are on no segment or facet are Unused);
+//     interior of facet f;
 //   - subsegments: each segment (domain::DomainSegment, same ids) is a chain of subsegments from
 //     its vertex a to its vertex b; a subsegment id is stable: splitting s = (u, w) at m
 //     turns s into (u, m) and appends (m, w);
@@ -49,7 +49,7 @@ class SurfaceCapError : public SurfaceError {
   using SurfaceError::SurfaceError;
 };
 
-enum class HomeKind : std::uint8_t { Input, Segment, Facet, Unused };
+enum class HomeKind : std::uint8_t { Input, Segment, Facet };
 
 struct Home {
   HomeKind kind = HomeKind::Input;

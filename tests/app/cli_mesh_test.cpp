@@ -204,6 +204,34 @@ TEST_F(Cli, MeshNoCheckSaysTheCheckWasSkipped) {
   EXPECT_TRUE(fs::exists(path("t.ele")));
 }
 
+// Nodes of a .poly that no facet lists are vertices of the mesh where they lie in the
+// domain (as TetGen inserts them); one outside is kept out of every tet. Before, the
+// mesher dropped them and its own check failed conformity.vertices (exit 1).
+TEST_F(Cli, MeshKeepsTheNodesNoFacetLists) {
+  auto lines = box_lines();
+  lines[0] = "11 3 0 0";
+  lines.insert(lines.begin() + 9, {"9 1.5 1 0.5", "10 0.25 0.5 0.75", "11 5 1 0.5"});
+  write("nodes.poly", joined(lines));
+  const Outcome r = run("mesh " + path("nodes.poly") + " -o " + path("m") + " --max-volume 0.01");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("check: pass"), std::string::npos) << r.out;
+  const auto nodes = records(path("m.node"));
+  const auto tets = records(path("m.ele"));
+  auto used = [&](const std::array<double, 3>& p) {
+    for (std::size_t i = 1; i < nodes.size(); ++i)
+      if (nodes[i][1] == p[0] && nodes[i][2] == p[1] && nodes[i][3] == p[2]) {
+        const double id = nodes[i][0];
+        for (std::size_t t = 1; t < tets.size(); ++t)
+          if (std::find(tets[t].begin() + 1, tets[t].begin() + 5, id) != tets[t].begin() + 5)
+            return true;
+      }
+    return false;
+  };
+  EXPECT_TRUE(used({1.5, 1, 0.5}));
+  EXPECT_TRUE(used({0.25, 0.5, 0.75}));
+  EXPECT_FALSE(used({5, 1, 0.5}));
+}
+
 // Each malformed domain exits 2, names bad.poly and the line, and leaves nothing behind
 // (not even the output folder).
 TEST_F(Cli, MeshMalformedDomainsExit2WithFileAndLineAndWriteNothing) {

@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "domain/distance.hpp"
 #include "domain/validate.hpp"
 #include "geom/predicates.hpp"
 #include "support/plc_fixtures.hpp"
@@ -438,6 +439,35 @@ TEST(PlcValidate, StandaloneSegmentsAndIsolatedVertices) {
   Plc pierce = p;
   pierce.points[9] = {3, 3, 5};  // the segment leaves through the top
   EXPECT_NE(error_of(pierce).find("non-crossing components"), std::string::npos);
+}
+
+TEST(PlcValidate, NodesListedInNoFacetAreIsolatedVertices) {
+  // TetGen inserts every node of a .poly: one that no facet lists is a component like a
+  // 1-vertex polygon, so it counts for d and is refused where it lies on a facet unlisted.
+  Plc p = box({0, 0, 0}, {4, 4, 4});
+  const double d_box = feature_size(build_domain(p)).d;
+  p.points.push_back({1, 1, 1});  // 8: in no facet, 1 from three facets
+  relabel(p);
+  const PlcDomain dom = build_domain(p);
+  EXPECT_EQ(dom.vertex_count(), 9u);
+  const FeatureSize fs = feature_size(dom);
+  EXPECT_LT(fs.d, d_box);
+  EXPECT_DOUBLE_EQ(fs.min_distance, 1.0);
+  EXPECT_TRUE(fs.first_kind == ComponentKind::Vertex || fs.second_kind == ComponentKind::Vertex);
+  EXPECT_EQ(feature_size_brute(dom).min_distance, fs.min_distance);
+
+  for (const Point& on : {Point{2, 2, 4}, Point{2, 0, 4}, Point{0, 0, 4}}) {
+    Plc q = box({0, 0, 0}, {4, 4, 4});
+    q.points.push_back(on);
+    relabel(q);
+    const std::string e = error_of(q);
+    if (on == Point{0, 0, 4}) {  // a duplicate of vertex 4
+      EXPECT_NE(e, "");
+      continue;
+    }
+    EXPECT_NE(e.find("the isolated vertex 8"), std::string::npos) << e;
+    EXPECT_NE(e.find("lies on facet"), std::string::npos) << e;
+  }
 }
 
 TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {

@@ -27,12 +27,9 @@ namespace {
 
 // Subfacets of m that are not faces of the 3D Delaunay tetrahedralization of its vertices.
 std::size_t missing_subfacets(const SurfaceMesh& m) {
-  std::vector<std::uint32_t> used;
-  for (std::uint32_t v = 0; v < m.vertex_count(); ++v)
-    if (m.home(v).kind != HomeKind::Unused) used.push_back(v);
   std::vector<Point> pts;
   std::map<Point, std::uint32_t> id_of;
-  for (const std::uint32_t v : used) {
+  for (std::uint32_t v = 0; v < m.vertex_count(); ++v) {
     pts.push_back(m.point(v));
     id_of[m.point(v)] = v;
   }
