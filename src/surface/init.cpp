@@ -218,9 +218,20 @@ SurfaceInit init_surface(const domain::PlcDomain& dom, double d, const SurfaceOp
       out.mesh.sizer.reset();
     }
   }
-  out.stats.vertex_cap = vertex_cap(
-      out.mesh, out.stats.graded ? out.stats.graded_estimate : out.stats.uniform_estimate,
-      options);
+  const double estimate = out.stats.graded ? out.stats.graded_estimate : out.stats.uniform_estimate;
+  out.stats.vertex_cap = vertex_cap(out.mesh, estimate, options);
+  const double least =
+      std::max(static_cast<double>(out.mesh.vertex_count()), estimate / kEstimateOverLeast);
+  if (least > static_cast<double>(out.stats.vertex_cap))
+    throw SurfaceCapError(
+        "surface.cap: before refinement: the " +
+        std::string(out.stats.graded ? "graded" : "uniform") + " surface mesh needs about " +
+        number(least) + " vertices or more (the facets' areas and the segments' lengths "
+        "against the sizes d gives them, d = " + number(d) + "), more than its cap of " +
+        std::to_string(out.stats.vertex_cap) + " (--max-vertices, else from a quarter of this "
+        "machine's memory); a thin part or a tiny gap between unrelated components (see the "
+        "domain report for the pair) makes d small. Raise --max-vertices, or enlarge the "
+        "small feature");
   Initializer init(out.mesh, d, out.stats.vertex_cap, out.stats);
   init.refine_segments();
   init.refine_facets();

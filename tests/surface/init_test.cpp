@@ -228,13 +228,50 @@ TEST(SurfaceInit, GuardNamesTheFacet) {
     EXPECT_EQ(msg.rfind("surface.cap: facet ", 0), 0u) << msg;
     EXPECT_NE(msg.find("box.poly:"), std::string::npos) << msg;
   }
-  o.max_vertices = 9;  // step 1 cannot complete: the message names a segment
+  // Step 1 cannot complete (it makes 24 vertices), yet the estimate's lower bound (about
+  // 16) does not stop it before: the message names a segment.
+  o.max_vertices = 20;
   try {
     (void)init_of(plc, o);
     FAIL() << "the guard did not fire";
   } catch (const SurfaceCapError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("surface.cap: segment ", 0), 0u) << e.what();
   }
+}
+
+// A mesh that cannot fit under the cap is not started: a 10 x 10 x 0.001 plate (d is the
+// thickness over sqrt(2), so about 4e8 vertices) stops before any refinement.
+TEST(SurfaceInit, ThinPlateStopsBeforeRefinement) {
+  SurfaceOptions o;
+  o.max_vertices = 1000000;
+  try {
+    (void)init_of(box({0, 0, 0}, {10, 10, 0.001}), o);
+    FAIL() << "the guard did not fire";
+  } catch (const SurfaceCapError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("surface.cap: before refinement: ", 0), 0u) << e.what();
+  }
+}
+
+// What the early stop relies on: the finished meshes hold more than the estimate's lower
+// bound (kEstimateOverLeast), uniform and graded, with room to spare.
+TEST(SurfaceInit, FinishedMeshesHoldMoreThanTheEstimatesLowerBound) {
+  std::vector<Plc> plcs;
+  for (const char* name : {"box.poly", "cube-in-cube.poly", "l-prism.poly", "tee.poly",
+                           "tee-paper.poly", "wedge60.poly"})
+    plcs.push_back(read_data(name));
+  plcs.push_back(box({0, 0, 0}, {100, 1, 1}));
+  plcs.push_back(merge(box({0, 0, 0}, {8, 5, 5}), box({1, 1, 1}, {1.125, 1.125, 1.125})));
+  for (const Plc& plc : plcs)
+    for (const SurfaceSizing sizing : {SurfaceSizing::Uniform, SurfaceSizing::Graded}) {
+      SurfaceOptions o;
+      o.sizing = sizing;
+      const SurfaceInit init = init_of(plc, o);
+      const double estimate =
+          init.stats.graded ? init.stats.graded_estimate : init.stats.uniform_estimate;
+      const auto n = static_cast<double>(init.mesh.vertex_count());
+      EXPECT_GT(n, 2 * estimate / kEstimateOverLeast) << plc.source << " graded " << init.stats.graded;
+      EXPECT_GE(n, static_cast<double>(plc.points.size()));
+    }
 }
 
 }  // namespace
