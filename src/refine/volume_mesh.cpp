@@ -19,6 +19,15 @@ void VolumeMesh::map_vertex(VertexId v, std::uint32_t surf_vertex) {
 
 MaybeId VolumeMesh::find_subfacet(VertexId a, VertexId b, VertexId c) const {
   const std::uint32_t sa = d2s[a], sb = d2s[b], sc = d2s[c];
+  // A vertex inside a facet is in that facet's subfacets only: with two inside different
+  // facets there is none (most faces of a thin plate, whose tets span its two sides).
+  std::uint32_t facet = kNone;
+  for (const VertexId x : {a, b, c}) {
+    if (vclass[x] != VertexClass::Facet) continue;
+    const std::uint32_t f = surf.home(d2s[x]).id;
+    if (facet != kNone && f != facet) return {};
+    facet = f;
+  }
   // Every subfacet listed at sa contains sa; one with the edge {sb, sc} is {sa, sb, sc}.
   for (const std::uint32_t t : surf.vertex_subfacets(sa)) {
     const Subfacet& f = surf.subfacet(t);
