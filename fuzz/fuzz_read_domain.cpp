@@ -1,5 +1,5 @@
 // Fuzz target: the domain readers (io/mesh_io.hpp read_domain: TetGen .poly, .smesh and
-// .node point sets, and the closed surfaces of io/surface.hpp: .off, .stl, .ply, medit
+// .node point sets, and the closed surfaces of io/surface.hpp: .off, .stl, .ply, .obj, medit
 // .mesh, Gmsh .msh, with their coplanar merge) and the domain analysis behind `pdr mesh` (domain/analysis.hpp: the
 // PLC's validation, admissibility and d) on arbitrary bytes. The first byte picks the
 // format; the rest is the file. Reading may only return a PLC or throw InputError, and so
@@ -20,8 +20,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
-  static const char* const ext[] = {".poly", ".smesh", ".node", ".off",
-                                    ".stl",  ".ply",   ".mesh", ".msh"};
+  static const char* const ext[] = {".poly", ".smesh", ".node", ".off", ".stl",
+                                    ".ply",  ".mesh",  ".msh",  ".obj"};
   const std::size_t format = data[0] % std::size(ext);
   const std::string path = "/tmp/pdr-fuzz-domain-" + std::to_string(::getpid()) + ext[format];
   {

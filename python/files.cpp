@@ -2,7 +2,7 @@
 // and the command line's writer (app::write_outputs: every file atomic, the prefix's
 // folder created), on numpy arrays.
 //
-// read's kind "auto" decides by the file name: .poly, .smesh, .off, .stl, .ply are
+// read's kind "auto" decides by the file name: .poly, .smesh, .off, .stl, .ply, .obj are
 // domains; a .node file is a mesh's points when PREFIX.ele exists beside it, else a
 // domain (a point set); .msh and .mesh are meshes, or surface domains when they hold no
 // tet; anything else (.ele, .vtu, a bare PREFIX) is a mesh.
@@ -25,7 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 
 bool is_domain_extension(const std::string& ext) {
-  for (const char* e : {".poly", ".smesh", ".off", ".stl", ".ply"})
+  for (const char* e : {".poly", ".smesh", ".off", ".stl", ".ply", ".obj"})
     if (ext == e) return true;
   return false;
 }

@@ -27,7 +27,7 @@ CLI::App* add_check_command(CLI::App& app, CheckArgs& chk) {
   cchk->add_option("mesh", chk.mesh,
                    "Mesh: PREFIX (PREFIX.node + PREFIX.ele) or a .ele/.node/.msh/.mesh/.vtu")
       ->required();
-  cchk->add_option("--domain", chk.domain, "The input domain (.poly/.smesh, or a closed surface: .off/.stl/.ply/.mesh/.msh)")
+  cchk->add_option("--domain", chk.domain, "The input domain (.poly/.smesh, or a closed surface: .off/.stl/.ply/.obj/.mesh/.msh)")
       ->check(CLI::ExistingFile);
   cchk->add_option("--ratio", chk.ratio, "Require radius-edge ratio < B")
       ->check(CLI::PositiveNumber);

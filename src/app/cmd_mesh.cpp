@@ -94,7 +94,7 @@ void quality_summary(const MeshData& mesh, Summary& summary) {
 
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   auto* c = app.add_subcommand("mesh", "Guaranteed-quality tetrahedral mesh of a domain");
-  c->add_option("domain", a.domain, "Domain: .poly, .smesh, or a closed surface: .off, .stl, .ply, .mesh, .msh")->required()->check(
+  c->add_option("domain", a.domain, "Domain: .poly, .smesh, or a closed surface: .off, .stl, .ply, .obj, .mesh, .msh")->required()->check(
       CLI::ExistingFile);
   c->add_option("-o,--output", a.prefix, "Output prefix")->required();
   c->add_option("--ratio", a.options.ratio, "Radius-edge ratio bound B")

@@ -39,10 +39,11 @@ Plc read_domain(const std::string& path, double planarity_tolerance) {
   if (ext == ".off") return surface_to_plc(read_off(path), tol);
   if (ext == ".stl") return surface_to_plc(read_stl(path), tol);
   if (ext == ".ply") return surface_to_plc(read_ply(path), tol);
+  if (ext == ".obj") return surface_to_plc(read_obj(path), tol);
   if (ext == ".msh") return surface_to_plc(read_gmsh_surface(path), tol);
   if (ext == ".mesh") return surface_to_plc(read_medit_surface(path), tol);
   throw InputError(path, 0, "unknown domain format: expected a .poly, .smesh, .node, .off, "
-                            ".stl, .ply, .mesh or .msh file");
+                            ".stl, .ply, .obj, .mesh or .msh file");
 }
 
 MeshFormat parse_mesh_format(std::string_view name) {

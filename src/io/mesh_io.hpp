@@ -30,7 +30,7 @@ namespace pdr::io {
 MeshData read_mesh(const std::string& path, ReadInfo* info = nullptr);
 
 // `path` is a .poly or .smesh file (a PLC), a .node file (a bare point set, no facets), or
-// a closed surface (.off, .stl, .ply, .mesh, .msh), converted by surface_to_plc
+// a closed surface (.off, .stl, .ply, .obj, .mesh, .msh), converted by surface_to_plc
 // (surface.hpp) with `planarity_tolerance` (the domain analysis's, domain::PlcOptions).
 Plc read_domain(const std::string& path, double planarity_tolerance = 1e-9);
 

@@ -1,5 +1,5 @@
 // Surface domains: a closed polygonal surface as the surface readers return it (OFF, STL,
-// PLY, the triangles and quadrilaterals of medit .mesh and Gmsh .msh files), and its
+// PLY, OBJ, the triangles and quadrilaterals of medit .mesh and Gmsh .msh files), and its
 // conversion to the Plc that pdr meshes (paper §1.1: a polyhedral domain bounded by planar
 // polygonal facets).
 //
@@ -88,6 +88,7 @@ Plc surface_to_plc(const Surface& surface, double planarity_tolerance = 1e-9);
 Surface read_off(const std::string& path);  // off_read.cpp
 Surface read_stl(const std::string& path);  // stl_read.cpp
 Surface read_ply(const std::string& path);  // ply_read.cpp
+Surface read_obj(const std::string& path);  // obj_read.cpp
 // Gmsh .msh 2.2/4.1, ASCII or binary (gmsh.hpp): the triangles (types 2, 9, 20-25) and
 // quadrilaterals (3, 10, 16) by their corners, in $Elements order, with their physical tags
 // as markers; node tags number the vertices in messages. Other elements are ignored.

@@ -50,6 +50,18 @@ TEST_F(Cli, SurfaceFacetWithAHoleMeshesAndPassesTheCheck) {
   EXPECT_EQ(c.code, 0) << c.out;
 }
 
+TEST_F(Cli, SurfaceObjMeshesAsTheOff) {
+  write("step.off", off_text(pdr::io::test::step()));
+  write("step.obj", pdr::io::test::obj_text(pdr::io::test::step()));
+  const auto o = mesh_json(path("step.off") + " -o " + path("o") + " --max-volume 0.1");
+  const auto w = mesh_json(path("step.obj") + " -o " + path("w") + " --max-volume 0.1");
+  EXPECT_EQ(w.at("check"), "pass");
+  EXPECT_EQ(w.at("tets"), o.at("tets"));
+  EXPECT_EQ(w.at("vertices"), o.at("vertices"));
+  const Outcome c = run("check " + path("o") + " --domain " + path("step.obj"));
+  EXPECT_EQ(c.code, 0) << c.out;
+}
+
 TEST_F(Cli, SurfaceWithAnOpenEdgeExits2AndWritesNothing) {
   pdr::io::test::Shape open = pdr::io::test::box_squares();
   open.faces.pop_back();

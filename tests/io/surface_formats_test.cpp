@@ -130,6 +130,33 @@ TEST(SurfaceFormats, Off) {
   EXPECT_NE(m.find("x.off:7: unexpected '3' after the last face"), std::string::npos) << m;
 }
 
+TEST(SurfaceFormats, Obj) {
+  ScratchDir dir;
+  expect_box(read_as(dir, "b.obj", obj_text(box_triangles())));
+  // Negative (relative) indices, the three corner forms, a vertex colour and a weight.
+  const Plc plc = read_as(dir, "t.obj",
+                          "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 1.0\nv 0 0 1\n"
+                          "f -4 -2 -3\nf 1//1 2//1 4//1\nf 2/1 3/1 4/1\nf 1/1/1 4/1/1 3/1/1\n");
+  EXPECT_EQ(plc.facets.size(), 4u);
+  EXPECT_EQ(plc.points.size(), 4u);
+  EXPECT_EQ(plc.point_lines[1], 2u);
+  EXPECT_EQ(plc.facets[3].line, 8u);
+  std::string m = error_of("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+  EXPECT_NE(m.find("x.obj:4: corner index 4 is out of range: 3 vertices"), std::string::npos) << m;
+  m = error_of("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n");
+  EXPECT_NE(m.find("x.obj:4: corner index -4 is out of range"), std::string::npos) << m;
+  m = error_of("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 0 2\n");
+  EXPECT_NE(m.find("x.obj:4: corner index 0 is out of range"), std::string::npos) << m;
+  m = error_of("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 a/2 3\n");
+  EXPECT_NE(m.find("x.obj:4: expected a face corner"), std::string::npos) << m;
+  m = error_of("x.obj", "v 0 0 zero\n");
+  EXPECT_NE(m.find("x.obj:1:"), std::string::npos) << m;
+  m = error_of("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n 3\n");
+  EXPECT_NE(m.find("x.obj:4: a line continued"), std::string::npos) << m;
+  m = error_of("x.obj", "# nothing\nv 0 0 0\n");
+  EXPECT_NE(m, "");  // no faces
+}
+
 TEST(SurfaceFormats, StlAscii) {
   ScratchDir dir;
   expect_box(read_as(dir, "b.stl", stl_ascii(box_triangles())));

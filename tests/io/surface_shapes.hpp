@@ -32,6 +32,23 @@ inline std::string off_text(const Shape& s) {
   return o.str();
 }
 
+// The shape as Wavefront OBJ, 1-based, with `v/vt/vn` corners and the statements exporters
+// add around them.
+inline std::string obj_text(const Shape& s) {
+  std::ostringstream o;
+  o.precision(17);
+  o << "# by hand\nmtllib m.mtl\no Shape\n";
+  for (const Point& p : s.points) o << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  o << "vt 0 0\nvn 0 0 1\nusemtl M\ns off\ng side\n";
+  for (const auto& f : s.faces) {
+    o << 'f';
+    for (std::uint32_t v : f) o << ' ' << v + 1 << "/1/1";
+    o << '\n';
+  }
+  o << "l 1 2\n";
+  return o.str();
+}
+
 // The box [0,a]x[0,b]x[z0,z1] as 6 outward squares, corners numbered from `base`.
 inline void add_box_squares(Shape& s, double x0, double y0, double x1, double y1, double z0,
                             double z1) {
