@@ -1,13 +1,16 @@
 // read_mesh, read_domain and write_mesh: dispatch on the file extension; see mesh_io.hpp.
 #include "io/mesh_io.hpp"
 
+#include <functional>
 #include <stdexcept>
+#include <vector>
 
 #include "io/file_bytes.hpp"
 #include "io/gmsh.hpp"
 #include "io/medit.hpp"
 #include "io/surface.hpp"
 #include "io/mesh_assembly.hpp"
+#include "io/tasks.hpp"
 #include "io/tetgen.hpp"
 
 namespace pdr::io {
@@ -78,14 +81,18 @@ void write_mesh(const MeshData& mesh, const std::string& prefix,
     if (f.values.size() != mesh.points.size())
       throw std::invalid_argument("cannot write '" + prefix + "': point field '" + f.name +
                                   "' does not have one value per point");
-  for (MeshFormat f : formats) {
-    switch (f) {
-      case MeshFormat::TetGen: write_tetgen_mesh(mesh, prefix); break;
-      case MeshFormat::Vtu: write_vtu(mesh, prefix + ".vtu", cell_fields, point_fields); break;
-      case MeshFormat::Msh: write_gmsh(mesh, prefix + ".msh"); break;
-      case MeshFormat::Medit: write_medit(mesh, prefix + ".mesh"); break;
-    }
-  }
+  // One task per format (io/tasks.hpp): the formats are independent files.
+  std::vector<std::function<void()>> tasks;
+  for (MeshFormat f : formats)
+    tasks.emplace_back([&, f] {
+      switch (f) {
+        case MeshFormat::TetGen: write_tetgen_mesh(mesh, prefix); break;
+        case MeshFormat::Vtu: write_vtu(mesh, prefix + ".vtu", cell_fields, point_fields); break;
+        case MeshFormat::Msh: write_gmsh(mesh, prefix + ".msh"); break;
+        case MeshFormat::Medit: write_medit(mesh, prefix + ".mesh"); break;
+      }
+    });
+  run_tasks(tasks);
 }
 
 }  // namespace pdr::io

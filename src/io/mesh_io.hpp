@@ -46,7 +46,8 @@ std::vector<std::string> output_paths(const std::string& prefix, MeshFormat form
 
 // Writes `mesh` in each of `formats` under `prefix`. Cell fields (one value per tet) and
 // point fields go to the .vtu output only. The mesh and the fields are checked before any
-// file is written (std::invalid_argument).
+// file is written (std::invalid_argument). The formats, and TetGen's three files, are
+// formatted concurrently (io/tasks.hpp); the first failure is rethrown once all ended.
 void write_mesh(const MeshData& mesh, const std::string& prefix,
                 std::span<const MeshFormat> formats,
                 const std::vector<CellField>& cell_fields = {},

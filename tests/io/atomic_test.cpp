@@ -3,12 +3,17 @@
 // file of the same name survives a failed write; multi-file sets appear all or none.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <csignal>
+#include <stdexcept>
+#include <thread>
 #include <sys/resource.h>
 #include <system_error>
 
 #include "io/atomic_file.hpp"
 #include "io/mesh_io.hpp"
+#include "io/tasks.hpp"
 #include "io/tetgen.hpp"
 #include "io_test_util.hpp"
 
@@ -140,9 +145,40 @@ TEST(Atomic, WriterFailingMidwayLeavesNoFileAndNoTemp) {
     EXPECT_THROW(write_mesh(m, dir / "big", std::vector<MeshFormat>{f}), std::system_error);
     EXPECT_TRUE(dir.entries().empty());
   }
+  // Every format at once (each on a thread of its own): all fail, nothing is left.
+  {
+    FileSizeLimit limit(64 * 1024);
+    EXPECT_THROW(write_mesh(m, dir / "big",
+                            std::vector<MeshFormat>{MeshFormat::TetGen, MeshFormat::Vtu,
+                                                    MeshFormat::Msh, MeshFormat::Medit}),
+                 std::system_error);
+    EXPECT_TRUE(dir.entries().empty());
+  }
   // Without the limit the same writes succeed.
   write_mesh(m, dir / "big", std::vector<MeshFormat>{MeshFormat::TetGen});
   EXPECT_EQ(dir.entries(), (Names{"big.ele", "big.face", "big.node"}));
+}
+
+// run_tasks: every task runs to its end, and the first failure in task order is rethrown
+// after all of them, whichever failed first in time.
+TEST(Atomic, RunTasksRunsEveryTaskAndRethrowsTheFirstInOrder) {
+  std::atomic<int> ran{0};
+  std::vector<std::function<void()>> tasks;
+  for (int i = 0; i < 4; ++i)
+    tasks.emplace_back([&ran, i] {
+      if (i == 1) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      ++ran;
+      if (i == 1) throw std::runtime_error("task 1");
+      if (i == 3) throw std::runtime_error("task 3");
+    });
+  try {
+    run_tasks(tasks);
+    FAIL() << "nothing was rethrown";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "task 1");
+  }
+  EXPECT_EQ(ran.load(), 4);
+  run_tasks({});
 }
 
 }  // namespace

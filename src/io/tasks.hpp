@@ -1,0 +1,40 @@
+// run_tasks: the writers' concurrency. Each task writes a file of its own (a format, or one
+// of TetGen's three files) from the same read-only mesh, so the tasks share nothing but
+// that mesh; they run on their own threads and the caller waits for all of them. The
+// first exception (in task order) is rethrown once every task has ended, so no thread
+// outlives the call and a failing task leaves the others' files as they would be had the
+// tasks run one after the other (each writer commits its own files or none).
+#pragma once
+
+#include <exception>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace pdr::io {
+
+inline void run_tasks(const std::vector<std::function<void()>>& tasks) {
+  std::vector<std::exception_ptr> errors(tasks.size());
+  {
+    std::vector<std::jthread> threads;
+    for (std::size_t i = 1; i < tasks.size(); ++i)
+      threads.emplace_back([&, i] {
+        try {
+          tasks[i]();
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
+      });
+    if (!tasks.empty()) {
+      try {
+        tasks[0]();
+      } catch (...) {
+        errors[0] = std::current_exception();
+      }
+    }
+  }  // joins
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace pdr::io
