@@ -170,6 +170,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   // Facets accepted as planar only within the documented relative tolerance (README).
   summary.set("planarity", report.at("planarity"));
   summary.set("d", an.report.feature.d);
+  // Voids no hole point marks: TetGen would mesh them as regions (README, Formats).
+  if (!an.report.unmarked_voids.empty())
+    summary.set("unmarked_voids", report.at("unmarked_voids"));
   timer.lap("analyze");
 
   int code = kExitOk;

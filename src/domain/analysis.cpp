@@ -64,6 +64,14 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
   r.facets = dom.face_count();
   for (const DomainFacet& f : dom.facets) r.triangles += f.tris.size();
   r.shells = dom.shells;
+  std::vector<std::uint8_t> reported(dom.shells, 0);
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f) {
+    const int s = dom.facets[f].shell;
+    if (s < 0 || reported[s] || !dom.void_shell[s]) continue;
+    reported[s] = 1;
+    ++r.voids;
+    if (dom.shell_holes[s] == 0) r.unmarked_voids.emplace_back(f, plc.facets[f].line);
+  }
   r.volume_holes = plc.holes.size();
   for (const PlcFacet& f : plc.facets) r.facet_holes += f.holes.size();
   r.regions = plc.regions.size();
@@ -95,7 +103,10 @@ std::string render_text(const DomainReport& r) {
     << r.segments << " segments (" << r.standalone_segments << " standalone), " << r.facets
     << " facets (" << r.triangles << " triangles), " << r.shells << " closed shells\n";
   o << "  holes: " << r.volume_holes << " volume, " << r.facet_holes << " facet; regions: "
-    << r.regions << "\n";
+    << r.regions << "; voids: " << r.voids << "\n";
+  for (const auto& [f, line] : r.unmarked_voids)
+    o << "    the void bounded by facet " << f << at_line(line)
+      << " holds no volume hole point (TetGen would mesh it as a region)\n";
   o << "  bounding box: [" << num(r.bbox_lo[0]) << ", " << num(r.bbox_lo[1]) << ", "
     << num(r.bbox_lo[2]) << "] .. [" << num(r.bbox_hi[0]) << ", " << num(r.bbox_hi[1]) << ", "
     << num(r.bbox_hi[2]) << "]\n";
@@ -141,7 +152,11 @@ nlohmann::json to_json(const DomainReport& r) {
                  {"segments", r.segments},             {"standalone_segments", r.standalone_segments},
                  {"facets", r.facets},                 {"triangles", r.triangles},
                  {"shells", r.shells},                 {"volume_holes", r.volume_holes},
-                 {"facet_holes", r.facet_holes},       {"regions", r.regions}};
+                 {"facet_holes", r.facet_holes},       {"regions", r.regions},
+                 {"voids", r.voids}};
+  json unmarked = json::array();
+  for (const auto& [f, line] : r.unmarked_voids) unmarked.push_back({{"facet", f}, {"line", line}});
+  j["unmarked_voids"] = unmarked;
   j["bounding_box"] = {{"min", r.bbox_lo}, {"max", r.bbox_hi}};
   json tol = json::array();
   for (const ToleranceFacet& t : r.tolerance_facets)

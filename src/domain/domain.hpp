@@ -87,6 +87,10 @@ struct PlcDomain {
   std::vector<std::vector<std::uint32_t>> vertex_segments;  // per vertex, sorted
   std::vector<std::vector<std::uint32_t>> vertex_facets;    // faces containing it, sorted
   std::size_t shells = 0;                            // closed surface components
+  std::vector<std::uint8_t> void_shell;              // per shell: what it encloses is a void
+                                                     // (enclosed by an odd number of others)
+  std::vector<std::uint8_t> shell_holes;             // per shell: volume hole points inside
+                                                     // it (saturating at 255)
   std::vector<std::uint32_t> tolerance_facets;       // faces planar only within tolerance
 
   std::optional<std::uint32_t> find_segment(std::uint32_t a, std::uint32_t b) const;

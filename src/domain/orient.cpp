@@ -187,6 +187,7 @@ void orient_boundary(PlcDomain& dom) {
     }
   }
   dom.shells = seeds.size();
+  dom.void_shell.assign(dom.shells, 0);
   for (std::size_t f = 0; f < dom.facets.size(); ++f)
     if (!dom.facets[f].tris.empty()) dom.facets[f].shell = comp[offset[f]];
 
@@ -203,9 +204,16 @@ void orient_boundary(PlcDomain& dom) {
     QPoint q;
     for (int k = 0; k < 3; ++k)
       q[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
-    int total = 0;
+    int total = 0, enclosing = 0;
     // RayCaster numbers triangles as g.
-    for (int x : rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g))) total += x;
+    const std::vector<int> crossings =
+        rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g));
+    for (std::size_t s = 0; s < crossings.size(); ++s) {
+      total += crossings[s];
+      if (s != c) enclosing += crossings[s] % 2;  // shell s encloses shell c
+    }
+    // What c encloses lies inside 1 + enclosing shells: a void when that is even.
+    dom.void_shell[c] = static_cast<std::uint8_t>(enclosing % 2);
     // The ray leaves along +axis, i.e. to the side of the normal iff n_axis > 0; that
     // side is in the domain iff the ray crosses the boundary an odd number of times.
     const auto seed_inward =
@@ -238,8 +246,9 @@ void orient_boundary(PlcDomain& dom) {
       h.inside_after = static_cast<std::int8_t>(dom.facets[h.facet].tris[h.tri].inward * h.dir);
 }
 
-void check_volume_holes(const PlcDomain& dom) {
+void check_volume_holes(PlcDomain& dom) {
   const Plc& plc = dom.plc;
+  dom.shell_holes.assign(dom.shells, 0);
   if (plc.holes.empty()) return;
   const RayCaster rays(dom);
   for (std::size_t i = 0; i < plc.holes.size(); ++i) {
@@ -257,9 +266,10 @@ void check_volume_holes(const PlcDomain& dom) {
     });
     const std::vector<int> crossings = rays.cast_axis(make_rat(h), 0, +1, -1);
     int total = 0, enclosing = 0;
-    for (int x : crossings) {
-      total += x;
-      enclosing += x % 2;
+    for (std::size_t s = 0; s < crossings.size(); ++s) {
+      total += crossings[s];
+      enclosing += crossings[s] % 2;
+      if (crossings[s] % 2 != 0 && dom.shell_holes[s] < 255) ++dom.shell_holes[s];
     }
     if (enclosing == 0)
       fail(plc, line,

@@ -47,6 +47,6 @@ void check_crossings(const PlcDomain& dom);
 void check_closed(const PlcDomain& dom);
 // Orientation and step 7 (domain/orient.cpp).
 void orient_boundary(PlcDomain& dom);
-void check_volume_holes(const PlcDomain& dom);
+void check_volume_holes(PlcDomain& dom);
 
 }  // namespace pdr::domain::detail

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -230,6 +231,25 @@ TEST_F(Cli, MeshKeepsTheNodesNoFacetLists) {
   EXPECT_TRUE(used({1.5, 1, 0.5}));
   EXPECT_TRUE(used({0.25, 0.5, 0.75}));
   EXPECT_FALSE(used({5, 1, 0.5}));
+}
+
+// A void no hole point marks is meshed as a void and listed in the summary (TetGen would
+// mesh it as a second region); with the hole point the list is absent.
+TEST_F(Cli, MeshListsTheVoidsNoHolePointMarks) {
+  std::ifstream in(data("cube-in-cube.poly"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t holes = text.find("# Part 3");
+  ASSERT_NE(holes, std::string::npos);
+  write("nohole.poly", text.substr(0, holes) + "0\n0\n");
+  const Outcome r = run("mesh " + path("nohole.poly") + " -o " + path("m") + " --json", false);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("unmarked_voids")) << r.out;
+  EXPECT_EQ(j["unmarked_voids"].size(), 1u);
+  EXPECT_EQ(j["unmarked_voids"][0]["facet"], 6);
+  const Outcome h = run("mesh " + data("cube-in-cube.poly") + " -o " + path("h") + " --json", false);
+  ASSERT_EQ(h.code, 0) << h.out;
+  EXPECT_FALSE(nlohmann::json::parse(h.out).contains("unmarked_voids"));
 }
 
 // Each malformed domain exits 2, names bad.poly and the line, and leaves nothing behind

@@ -34,5 +34,28 @@ TEST(PlcReport, ToleranceFacetsAreListed) {
       << render_text(r);
 }
 
+// Voids are the shells enclosed an even number of times; those no hole point marks are
+// listed (TetGen would mesh them as regions). Three nested boxes and a box beside them:
+// only the middle box encloses a void.
+TEST(PlcReport, VoidsWithoutHolePointsAreListed) {
+  const Plc nested = merge(merge(box({0, 0, 0}, {10, 10, 10}), box({2, 2, 2}, {8, 8, 8})),
+                           box({4, 4, 4}, {6, 6, 6}));
+  Plc plc = merge(nested, box({20, 0, 0}, {21, 1, 1}));
+  DomainReport r = analyze_domain(plc);
+  EXPECT_EQ(r.shells, 4u);
+  EXPECT_EQ(r.voids, 1u);
+  ASSERT_EQ(r.unmarked_voids.size(), 1u);
+  EXPECT_EQ(r.unmarked_voids[0].first, 6u);  // the middle box's first facet
+  EXPECT_NE(render_text(r).find("the void bounded by facet 6"), std::string::npos) << render_text(r);
+  EXPECT_EQ(to_json(r)["unmarked_voids"].size(), 1u);
+  plc.holes.push_back({3, 3, 3});  // in the void, outside the innermost box
+  r = analyze_domain(plc);
+  EXPECT_EQ(r.voids, 1u);
+  EXPECT_TRUE(r.unmarked_voids.empty());
+  EXPECT_EQ(analyze_domain(read_data("cube-in-cube.poly")).voids, 1u);
+  EXPECT_TRUE(analyze_domain(read_data("cube-in-cube.poly")).unmarked_voids.empty());
+  EXPECT_EQ(analyze_domain(read_data("box.poly")).voids, 0u);
+}
+
 }  // namespace
 }  // namespace pdr::domain::test
