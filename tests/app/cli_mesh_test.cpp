@@ -233,6 +233,21 @@ TEST_F(Cli, MeshKeepsTheNodesNoFacetLists) {
   EXPECT_FALSE(used({5, 1, 0.5}));
 }
 
+// Issue #11 item 3: a run whose guards refused to refine encroached elements says so even
+// with --no-check (exit 3, as the check would make it); before, it exited 0.
+TEST_F(Cli, MeshNoCheckSaysWhenTheGuardsLeftEncroachedElements) {
+  const std::string tee = std::string(PDR_SOURCE_DIR) + "/bench/data/tee-sharp.poly";
+  const Outcome r = run("mesh " + tee + " -o " + path("n") + " --max-volume 0.5 --no-check --json", false);
+  ASSERT_EQ(r.code, 3) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["quality"].get<std::string>().rfind("NOT GUARANTEED: the guards refused", 0), 0u) << r.out;
+  EXPECT_FALSE(j["unsplit"].empty());
+  const Outcome c = run("mesh " + tee + " -o " + path("c") + " --max-volume 0.5 --json", false);
+  EXPECT_EQ(c.code, 3) << c.out;
+  EXPECT_NE(nlohmann::json::parse(c.out)["check_failed"].dump().find("encroachment."),
+            std::string::npos) << c.out;
+}
+
 // A void no hole point marks is meshed as a void and listed in the summary (TetGen would
 // mesh it as a second region); with the hole point the list is absent.
 TEST_F(Cli, MeshListsTheVoidsNoHolePointMarks) {
