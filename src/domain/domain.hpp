@@ -20,7 +20,7 @@
 //   - every triangle knows which of its sides faces the domain (`inward`), and the facet
 //     sides around each segment are sorted by angle with the inside wedges marked;
 //   - volume hole points lie strictly inside some closed shell, in a void (even parity),
-//     off every facet.
+//     off every facet; region points lie inside the domain (odd parity), off every facet.
 #pragma once
 
 #include <array>

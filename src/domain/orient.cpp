@@ -17,7 +17,7 @@
 //      symbolically off every edge line it meets, so one ray always decides, whatever
 //      the input's symmetry (crosses() below).
 // Hole points are tested the same way with one axis ray from the point itself, counting
-// crossings per shell.
+// crossings per shell; so are region points, which must lie inside the domain.
 #include <algorithm>
 #include <stdexcept>
 
@@ -282,6 +282,33 @@ void check_volume_holes(PlcDomain& dom) {
                " lies inside the domain (it is enclosed by an odd number of closed boundary "
                "surfaces), not in a void; pdr's domain is what the closed boundary encloses, "
                "so a hole point can only mark a void. Move it into the void or remove it");
+  }
+}
+
+void check_region_points(const PlcDomain& dom) {
+  const Plc& plc = dom.plc;
+  if (plc.regions.empty()) return;
+  const RayCaster rays(dom);
+  for (std::size_t i = 0; i < plc.regions.size(); ++i) {
+    const Point& p = plc.regions[i].point;
+    const std::size_t line = plc.regions[i].line;
+    const std::string which = "region point " + std::to_string(i + 1);
+    Box q;
+    q.add(p);
+    rays.bvh().for_overlapping(q, [&](std::uint32_t k) {
+      const FacetTri& t = rays.tri(rays.tris()[k]);
+      if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], p))
+        fail(plc, line,
+             "region point in the domain: " + which + " lies on " +
+                 facet_name(plc, rays.tris()[k].facet) + "; move it into the region it names");
+    });
+    int total = 0;
+    for (int x : rays.cast_axis(make_rat(p), 0, +1, -1)) total += x;
+    if (total % 2 == 0)
+      fail(plc, line,
+           "region point in the domain: " + which +
+               " lies outside the domain (outside its closed boundary, or in a void); a region "
+               "point must lie inside the region it names. Move it there or remove it");
   }
 }
 

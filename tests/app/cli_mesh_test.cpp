@@ -282,6 +282,7 @@ TEST_F(Cli, MeshMalformedDomainsExit2WithFileAndLineAndWriteNothing) {
       {"coordinate out of range", 3, "2 1e40 0 0", "bad.poly:3"},
       {"polygon visits a vertex twice", 12, "4 1 2 3 1", "bad.poly:11"},
       {"non-planar facet", 8, "7 3 2 1.5", "bad.poly:"},
+      {"region point outside the domain", 24, "1\n1 5 1 0.5 3 -1", "bad.poly:25: region point"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);

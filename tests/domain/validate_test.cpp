@@ -470,6 +470,31 @@ TEST(PlcValidate, NodesListedInNoFacetAreIsolatedVertices) {
   }
 }
 
+TEST(PlcValidate, RegionPointsLieInsideTheDomain) {
+  // Before, one outside passed validation and the mesher's own check failed
+  // (conformity.volume: empty_regions), exit 1.
+  const auto with_region = [](Plc p, const Point& at) {
+    PlcRegion r;
+    r.point = at;
+    r.attribute = 3;
+    p.regions.push_back(r);
+    return p;
+  };
+  Plc b = box({0, 0, 0}, {4, 4, 4});
+  relabel(b);
+  EXPECT_EQ(error_of(with_region(b, {1, 1, 1})), "");
+  EXPECT_NE(error_of(with_region(b, {5, 1, 1})).find("lies outside the domain"), std::string::npos);
+  EXPECT_NE(error_of(with_region(b, {1, 1, 4})).find("region point 1 lies on facet"),
+            std::string::npos)
+      << error_of(with_region(b, {1, 1, 4}));
+  Plc cic = merge(box({0, 0, 0}, {10, 10, 10}), box({4, 4, 4}, {6, 6, 6}));
+  cic.holes.push_back({5, 5, 5});
+  relabel(cic);
+  EXPECT_EQ(error_of(with_region(cic, {1, 1, 1})), "");
+  EXPECT_NE(error_of(with_region(cic, {5, 5, 5.5})).find("lies outside the domain"),
+            std::string::npos);  // in the void
+}
+
 TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {
   // A standalone segment along the diagonal of the top of a box: it lies in the top facet
   // whether or not the facet's triangulation happens to use that diagonal.
