@@ -25,6 +25,7 @@
 #include "app/partitioned_output.hpp"
 #include "app/pipeline.hpp"
 #include "app/progress.hpp"
+#include "app/regions.hpp"
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "delaunay/export.hpp"
@@ -51,9 +52,17 @@ void check_range(const Plc& plc) {
                            "[2^-100, 2^100] (about 1e-30 .. 1e30); rescale the input");
 }
 
-// The in-domain tets and the subfacets (with their facets' markers) as a MeshData.
+// The in-domain tets and the subfacets (with their facets' markers) as a MeshData; with
+// region records in the input, each tet's region attribute too (app/regions.hpp).
 MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc) {
   MeshData mesh = to_mesh_data(m.dt, m.inside);
+  if (!plc.regions.empty()) {
+    const std::vector<int> label = region_labels(m, plc.regions);
+    const TetStore& s = m.dt.store();
+    mesh.tet_regions.reserve(mesh.tets.size());
+    for (TetId t = 0; t < s.slots(); ++t)  // the order of to_mesh_data
+      if (s.is_alive(t) && !s.is_ghost(t) && m.inside[t] != 0) mesh.tet_regions.push_back(label[t]);
+  }
   mesh.face_markers.resize(mesh.faces.size(), 0);
   for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
     const auto& f = mesh.faces[i];

@@ -248,6 +248,43 @@ TEST_F(Cli, MeshNoCheckSaysWhenTheGuardsLeftEncroachedElements) {
             std::string::npos) << c.out;
 }
 
+// Region attributes as TetGen's -A gives them: two boxes, a region point with attribute 7
+// in the first; the second, without one, gets 8. Every tet of each box carries its label.
+TEST_F(Cli, MeshLabelsEachRegion) {
+  std::ostringstream p;
+  p << "16 3 0 0\n";
+  for (int b = 0; b < 2; ++b)
+    for (int k = 0; k < 8; ++k)
+      p << 8 * b + k + 1 << ' ' << 2 * b + (k & 1) << ' ' << (k >> 1 & 1) << ' ' << (k >> 2) << '\n';
+  p << "12 0\n";
+  const int quads[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+  for (int b = 0; b < 2; ++b)
+    for (const auto& q : quads)
+      p << "1\n4 " << 8 * b + q[0] + 1 << ' ' << 8 * b + q[1] + 1 << ' ' << 8 * b + q[2] + 1
+        << ' ' << 8 * b + q[3] + 1 << '\n';
+  p << "0\n1\n1 0.5 0.5 0.5 7 -1\n";
+  write("two.poly", p.str());
+  const Outcome r = run("mesh " + path("two.poly") + " -o " + path("m") + " --max-volume 0.01");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("check: pass"), std::string::npos) << r.out;
+  const auto nodes = records(path("m.node"));
+  const auto tets = records(path("m.ele"));
+  ASSERT_EQ(tets[0].size(), 3u);
+  EXPECT_EQ(tets[0][2], 1);  // one attribute
+  std::size_t first = 0, second = 0;
+  for (std::size_t i = 1; i < tets.size(); ++i) {
+    ASSERT_EQ(tets[i].size(), 6u);
+    double x = 0;
+    for (int k = 1; k <= 4; ++k) x += nodes[static_cast<std::size_t>(tets[i][k])][1] / 4;
+    const double want = x < 1.5 ? 7 : 8;
+    EXPECT_EQ(tets[i][5], want) << "tet " << i;
+    (x < 1.5 ? first : second) += 1;
+  }
+  EXPECT_GT(first, 0u);
+  EXPECT_GT(second, 0u);
+}
+
 // A void no hole point marks is meshed as a void and listed in the summary (TetGen would
 // mesh it as a second region); with the hole point the list is absent.
 TEST_F(Cli, MeshListsTheVoidsNoHolePointMarks) {
