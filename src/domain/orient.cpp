@@ -137,6 +137,63 @@ void sort_sides(const std::vector<Point>& pts, DomainSegment& s) {
   });
 }
 
+// The innermost shell enclosing a point, from its ray's crossings per shell (-1: none).
+int innermost(const std::vector<int>& crossings, const std::vector<int>& depth) {
+  int best = -1;
+  for (std::size_t s = 0; s < crossings.size(); ++s)
+    if (crossings[s] % 2 == 1 && (best < 0 || depth[s] > depth[best])) best = static_cast<int>(s);
+  return best;
+}
+
+// Nesting of the shells and which cells are in Ω (domain.hpp): shell_parent, cell_inside,
+// separates, void_shell and cells_by_hole_points, from the seed rays' crossings per shell.
+void classify_cells(PlcDomain& dom, const RayCaster& rays,
+                    const std::vector<std::vector<int>>& crossings) {
+  const std::size_t shells = crossings.size();
+  std::vector<int>& depth = dom.shell_depth;
+  depth.assign(shells, 1);
+  for (std::size_t c = 0; c < shells; ++c)
+    for (std::size_t s = 0; s < shells; ++s)
+      if (s != c && crossings[c][s] % 2 == 1) ++depth[c];
+  dom.shell_parent.assign(shells, -1);
+  for (std::size_t c = 0; c < shells; ++c) {
+    std::vector<int> others = crossings[c];
+    others[c] = 0;
+    dom.shell_parent[c] = innermost(others, depth);
+  }
+  // Cells by hole points (TetGen's reading) only where every shell is a closed 2-manifold,
+  // each bounding one cell; otherwise parity.
+  bool manifold = true;
+  for (const DomainSegment& s : dom.segments) manifold = manifold && (s.sides.empty() || s.sides.size() == 2);
+  dom.cells_by_hole_points = dom.plc.enclosure == Enclosure::HolePoints && manifold;
+  std::vector<std::uint8_t> holed(shells, 0);
+  if (dom.cells_by_hole_points)
+    for (const Point& h : dom.plc.holes) {
+      const int cell = innermost(rays.cast_axis(make_rat(h), 0, +1, -1), depth);
+      if (cell >= 0) holed[cell] = 1;
+    }
+  dom.cell_inside.assign(shells, 0);
+  for (std::size_t c = 0; c < shells; ++c)
+    dom.cell_inside[c] = dom.cells_by_hole_points ? !holed[c] : depth[c] % 2 == 1;
+  dom.separates.assign(shells, 1);
+  dom.void_shell.assign(shells, 0);
+  for (std::size_t c = 0; c < shells; ++c) {
+    const int parent = dom.shell_parent[c];
+    const bool outside_in = parent >= 0 && dom.cell_inside[parent] != 0;
+    dom.separates[c] = (dom.cell_inside[c] != 0) != outside_in;
+    dom.void_shell[c] = !dom.cell_inside[c];
+    if (dom.separates[c] || dom.cell_inside[c]) continue;
+    // Holes on both sides: the shell bounds no part of Ω, and no mesh could hold it.
+    for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
+      if (dom.facets[f].shell == static_cast<int>(c))
+        fail(dom.plc, dom.plc.facets[f].line,
+             "volume holes: the closed surface of " + facet_name(dom.plc, f) +
+                 " has no domain on either side (a volume hole point marks the region inside "
+                 "it and the one around it, or it lies in a void); remove that surface or "
+                 "the hole point that empties the region it bounds");
+  }
+}
+
 }  // namespace
 
 void orient_boundary(PlcDomain& dom) {
@@ -187,37 +244,47 @@ void orient_boundary(PlcDomain& dom) {
     }
   }
   dom.shells = seeds.size();
-  dom.void_shell.assign(dom.shells, 0);
   for (std::size_t f = 0; f < dom.facets.size(); ++f)
     if (!dom.facets[f].tris.empty()) dom.facets[f].shell = comp[offset[f]];
 
   const RayCaster rays(dom);
-  for (std::size_t c = 0; c < seeds.size(); ++c) {
-    // Seed: a ray from a rational point strictly inside a triangle of the component.
+  // Seeds: a ray from a rational point strictly inside a triangle of each shell, along the
+  // axis of that triangle's largest normal component (the side of the normal iff n_axis
+  // > 0). Shell s encloses shell c iff c's ray crosses s an odd number of times; the ray
+  // leaves from inside c iff it crosses c itself (its own triangle skipped) an odd number
+  // of times.
+  const std::size_t shells = seeds.size();
+  std::vector<std::vector<int>> crossings(shells);
+  std::vector<Sign> normal_sign(shells);
+  for (std::size_t c = 0; c < shells; ++c) {
     const std::size_t g = seeds[c];
     const std::uint32_t f = facet_of(g);
     const FacetTri& t = dom.facets[f].tris[g - offset[f]];
     const Point &a = pts[t.v[0]], &b = pts[t.v[1]], &cc = pts[t.v[2]];
     const int axis = nondegenerate_drop(a, b, cc);
-    const Sign nk = orient2d_dropping(axis, a, b, cc);
+    normal_sign[c] = orient2d_dropping(axis, a, b, cc);
     const mpq_class w1(3), w2(5), w3(7), sum(15);
     QPoint q;
     for (int k = 0; k < 3; ++k)
       q[k] = (w1 * mpq_class(a[k]) + w2 * mpq_class(b[k]) + w3 * mpq_class(cc[k])) / sum;
-    int total = 0, enclosing = 0;
     // RayCaster numbers triangles as g.
-    const std::vector<int> crossings =
-        rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g));
-    for (std::size_t s = 0; s < crossings.size(); ++s) {
-      total += crossings[s];
-      if (s != c) enclosing += crossings[s] % 2;  // shell s encloses shell c
-    }
-    // What c encloses lies inside 1 + enclosing shells: a void when that is even.
-    dom.void_shell[c] = static_cast<std::uint8_t>(enclosing % 2);
-    // The ray leaves along +axis, i.e. to the side of the normal iff n_axis > 0; that
-    // side is in the domain iff the ray crosses the boundary an odd number of times.
+    crossings[c] = rays.cast_axis(make_rat(q), axis, +1, static_cast<std::int64_t>(g));
+  }
+  classify_cells(dom, rays, crossings);
+  for (std::size_t c = 0; c < shells; ++c) {
+    const std::size_t g = seeds[c];
+    const int parent = dom.shell_parent[c];
+    const bool parent_inside = parent >= 0 && dom.cell_inside[parent] != 0;
+    // Which cell the seed ray enters: the one inside c, or the one around it.
+    const bool plus_into_c = crossings[c][c] % 2 == 1;
+    int total = 0;
+    for (const int x : crossings[c]) total += x;
+    const bool plus_inside =
+        !dom.cells_by_hole_points ? total % 2 == 1  // parity: odd crossings
+        : dom.separates[c]        ? (plus_into_c ? dom.cell_inside[c] != 0 : parent_inside)
+                                  : plus_into_c;  // both sides alike: towards c's cell
     const auto seed_inward =
-        static_cast<std::int8_t>((nk == Sign::Positive ? 1 : -1) * (total % 2 ? 1 : -1));
+        static_cast<std::int8_t>((normal_sign[c] == Sign::Positive ? 1 : -1) * (plus_inside ? 1 : -1));
     inward[g] = seed_inward;
     std::vector<std::size_t> stack{g};
     while (!stack.empty()) {
@@ -241,9 +308,15 @@ void orient_boundary(PlcDomain& dom) {
   for (std::size_t f = 0; f < dom.facets.size(); ++f)
     for (std::size_t t = 0; t < dom.facets[f].tris.size(); ++t)
       dom.facets[f].tris[t].inward = inward[offset[f] + t];
+  for (std::size_t f = 0; f < dom.facets.size(); ++f)
+    if (dom.facets[f].shell >= 0) dom.facets[f].separates = dom.separates[dom.facets[f].shell] != 0;
   for (DomainSegment& s : dom.segments)
-    for (HalfFacet& h : s.sides)
-      h.inside_after = static_cast<std::int8_t>(dom.facets[h.facet].tris[h.tri].inward * h.dir);
+    for (HalfFacet& h : s.sides) {
+      const int shell = dom.facets[h.facet].shell;
+      h.inside_after = dom.separates[shell]
+                           ? static_cast<std::int8_t>(dom.facets[h.facet].tris[h.tri].inward * h.dir)
+                           : static_cast<std::int8_t>(dom.cell_inside[shell] ? 1 : -1);
+    }
 }
 
 void check_volume_holes(PlcDomain& dom) {
@@ -276,7 +349,7 @@ void check_volume_holes(PlcDomain& dom) {
            "volume hole in a void: " + which +
                " lies outside the domain's closed boundary; a volume hole point must mark "
                "a void enclosed by the boundary. Move it into the void or remove it");
-    if (total % 2 == 1)
+    if (!dom.cells_by_hole_points && total % 2 == 1)
       fail(plc, line,
            "volume hole in a void: " + which +
                " lies inside the domain (it is enclosed by an odd number of closed boundary "
@@ -302,9 +375,8 @@ void check_region_points(const PlcDomain& dom) {
              "region point in the domain: " + which + " lies on " +
                  facet_name(plc, rays.tris()[k].facet) + "; move it into the region it names");
     });
-    int total = 0;
-    for (int x : rays.cast_axis(make_rat(p), 0, +1, -1)) total += x;
-    if (total % 2 == 0)
+    const int cell = innermost(rays.cast_axis(make_rat(p), 0, +1, -1), dom.shell_depth);
+    if (cell < 0 || !dom.cell_inside[cell])
       fail(plc, line,
            "region point in the domain: " + which +
                " lies outside the domain (outside its closed boundary, or in a void); a region "

@@ -46,6 +46,7 @@ Plc read_facet_domain(const std::string& path, std::size_t min_bytes_per_facet,
   TextScanner s(bytes, path);
   Plc plc;
   plc.source = path;
+  plc.enclosure = Enclosure::HolePoints;  // TetGen's reading: every unholed cell is meshed
   const std::uint32_t base = read_domain_points(s, path, plc);
   const std::size_t npts = plc.points.size();
   const std::size_t nf = read_facet_header(s, min_bytes_per_facet);

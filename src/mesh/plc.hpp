@@ -28,8 +28,17 @@ struct PlcRegion {
   std::size_t line = 0;
 };
 
+// Which cells of the boundary's complement are in the domain.
+enum class Enclosure : std::uint8_t {
+  Parity,      // those enclosed by an odd number of closed shells: a shell inside another
+               // bounds a void (surface formats: a hollow part's inner surface)
+  HolePoints,  // every bounded cell unless a volume hole point lies in it: a shell inside
+               // another bounds a second region (TetGen's reading of a .poly or .smesh)
+};
+
 struct Plc {
   std::string source;                  // file name, for diagnostics
+  Enclosure enclosure = Enclosure::Parity;
   std::vector<Point> points;
   std::vector<std::size_t> point_lines;  // source line of each point
   std::vector<int> point_markers;      // empty or points.size()

@@ -105,7 +105,7 @@ std::vector<std::string> audit_volume(const VolumeMesh& m) {
       const TetId n = s.neighbour(t, f);
       const bool in_t = !s.is_ghost(t) && m.is_inside(t);
       const bool in_n = !s.is_ghost(n) && m.is_inside(n);
-      if ((in_t != in_n) != sf.has_value())
+      if ((in_t != in_n) != m.face_flips(t, f))
         out.push_back("volume.parity: tets " + std::to_string(t) + " and " +
                       std::to_string(n) + " across face " + std::to_string(f));
     }

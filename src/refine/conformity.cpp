@@ -146,7 +146,7 @@ std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
     for (int f = 0; f < 4; ++f) {
       const TetId n = s.neighbour(live[i], f);
       if (!s.is_ghost(n) && index(n) < live.size()) continue;
-      const bool across = m.face_subfacet(live[i], f).has_value();
+      const bool across = m.face_flips(live[i], f);
       m.inside[live[i]] = static_cast<std::uint8_t>((s.is_ghost(n) ? 0 : m.inside[n]) ^ across);
       done[i] = 1;
       queue.push_back(live[i]);
@@ -159,7 +159,7 @@ std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made) {
       if (s.is_ghost(n)) continue;
       const std::size_t j = index(n);
       if (j == live.size() || done[j]) continue;
-      const bool across = m.face_subfacet(t, f).has_value();
+      const bool across = m.face_flips(t, f);
       m.inside[n] = static_cast<std::uint8_t>(m.inside[t] ^ across);
       done[j] = 1;
       queue.push_back(n);
@@ -175,7 +175,7 @@ bool star_flags_consistent(const VolumeMesh& m, std::span<const TetId> star) {
     for (int f = 0; f < 4; ++f) {
       const TetId n = s.neighbour(t, f);
       const int other = s.is_ghost(n) ? 0 : m.inside[n];
-      if ((m.inside[t] ^ other) != (m.face_subfacet(t, f) ? 1 : 0)) return false;
+      if ((m.inside[t] ^ other) != (m.face_flips(t, f) ? 1 : 0)) return false;
     }
   }
   return true;
@@ -198,7 +198,7 @@ std::vector<TetId> reflag_all(VolumeMesh& m, std::size_t& conflicts) {
     if (!s.is_alive(g) || !s.is_ghost(g)) continue;
     for (int f = 0; f < 4; ++f) {
       const TetId n = s.neighbour(g, f);
-      if (!s.is_ghost(n)) reach(n, m.face_subfacet(n, s.back_face(g, f)) ? 1 : 0);
+      if (!s.is_ghost(n)) reach(n, m.face_flips(n, s.back_face(g, f)) ? 1 : 0);
     }
   }
   for (std::size_t q = 0; q < queue.size(); ++q) {
@@ -206,7 +206,7 @@ std::vector<TetId> reflag_all(VolumeMesh& m, std::size_t& conflicts) {
     for (int f = 0; f < 4; ++f) {
       const TetId n = s.neighbour(t, f);
       if (s.is_ghost(n)) continue;
-      reach(n, static_cast<std::uint8_t>(flag[t] ^ (m.face_subfacet(t, f) ? 1 : 0)));
+      reach(n, static_cast<std::uint8_t>(flag[t] ^ (m.face_flips(t, f) ? 1 : 0)));
     }
   }
   conflicts /= 2;  // each disagreeing face is met from both sides

@@ -59,9 +59,8 @@ VolumeMesh build_initial(SurfaceMesh surf, std::span<const Point> holes, std::ui
   for (std::size_t i = 0; i < queue.size(); ++i) {
     const TetId t = queue[i];
     for (int f = 0; f < 4; ++f) {
-      const auto sf = m.face_subfacet(t, f);
       const TetId n = s.neighbour(t, f);
-      const std::uint8_t want = s.is_ghost(n) ? 0 : static_cast<std::uint8_t>(m.inside[t] ^ (sf ? 1 : 0));
+      const std::uint8_t want = s.is_ghost(n) ? 0 : static_cast<std::uint8_t>(m.inside[t] ^ (m.face_flips(t, f) ? 1 : 0));
       if (!seen[n]) {
         seen[n] = 1;
         m.inside[n] = want;

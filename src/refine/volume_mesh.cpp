@@ -68,7 +68,7 @@ VertexId commit_point(VolumeMesh& m, const Cavity& c, std::uint32_t surf_vertex,
     }
     const int k = face_of(c.boundary[i]);
     const TetId n = s.neighbour(t, k);
-    const bool flip = m.face_subfacet(t, k).has_value();
+    const bool flip = m.face_flips(t, k);
     m.inside[t] = static_cast<std::uint8_t>((s.is_ghost(n) ? 0 : m.inside[n]) ^ (flip ? 1 : 0));
   }
   return v;

@@ -8,8 +8,9 @@
 //   - every live subfacet of D is a face of T and every subsegment an edge (§1.1 "the
 //     subsegments and subfacets in D appear in T");
 //   - inside[t] for a finite tet t is 1 iff t lies in Ω: across a face of T the flag
-//     changes exactly when the face is a subfacet (Ω is the set of points from which a ray
-//     crosses ∂Ω an odd number of times, domain/domain.hpp), ghost tets are outside;
+//     changes exactly when the face is a subfacet of a separating facet (face_flips; the
+//     facets of an internal shell have Ω on both sides, domain/domain.hpp), ghost tets are
+//     outside;
 //   - d2s / s2d map T's vertex ids to D's and back (kNone: a vertex of T off ∂Ω);
 //   - vclass[v] (parallel to d2s) says where T's vertex v lies: Segment for an input
 //     vertex or a vertex on a segment (the only vertices a subsegment can end at), Facet
@@ -84,6 +85,12 @@ struct VolumeMesh {
     const VertexId* v = dt.store().vertices(t);
     return subfacet(v[tables::kFaceVertex[f][0]], v[tables::kFaceVertex[f][1]],
                     v[tables::kFaceVertex[f][2]]);
+  }
+  // Whether `inside` changes across face f of tet t: the face is a subfacet of a facet with
+  // Ω on one side only (an internal facet has Ω on both: domain/domain.hpp).
+  bool face_flips(TetId t, int f) const {
+    const MaybeId sf = face_subfacet(t, f);
+    return sf && surf.facets[surf.subfacet(*sf).facet].separates;
   }
   bool is_inside(TetId t) const { return t < inside.size() && inside[t] != 0; }
   std::size_t inside_tets() const;

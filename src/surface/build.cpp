@@ -38,6 +38,7 @@ SurfaceMesh build_surface(const domain::PlcDomain& dom) {
     sf.is_face = F.is_face;
     sf.segments = F.segments;
     sf.line = plc.facets[f].line;
+    sf.separates = dom.facets[f].separates;
     sf.plane_group = F.plane_group;
     if (!F.is_face) continue;
     sf.chart = make_chart(F.plane, plc.points);

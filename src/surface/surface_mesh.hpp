@@ -89,6 +89,8 @@ struct SurfaceFacet {
   std::vector<std::uint32_t> segments;  // segments contained in the facet, sorted
   std::vector<BoundarySide> boundary;   // the region's boundary, as segments
   std::size_t line = 0;                 // source line of the facet, for diagnostics
+  bool separates = true;                // domain::DomainFacet::separates: Ω on one side
+                                        // only (false: an internal facet, Ω on both)
 };
 
 class SurfaceMesh {

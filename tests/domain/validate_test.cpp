@@ -495,6 +495,57 @@ TEST(PlcValidate, RegionPointsLieInsideTheDomain) {
             std::string::npos);  // in the void
 }
 
+// TetGen's reading of a .poly (Enclosure::HolePoints): every bounded cell is in Ω unless a
+// volume hole point lies in it, so a shell between two regions is internal (both sides in
+// Ω, its facets not separating); by parity the same shells alternate solid and void.
+TEST(PlcValidate, NestedShellsAreRegionsUnlessAHolePointEmptiesThem) {
+  Plc nest = merge(merge(box({0, 0, 0}, {10, 10, 10}), box({2, 2, 2}, {8, 8, 8})),
+                   box({4, 4, 4}, {6, 6, 6}));
+  relabel(nest);
+  const auto separates = [](const PlcDomain& d) {
+    std::vector<int> out;
+    for (int s = 0; s < 3; ++s) out.push_back(d.separates[d.facets[6 * s].shell]);
+    return out;
+  };
+  const auto inside = [](const PlcDomain& d) {
+    std::vector<int> out;
+    for (int s = 0; s < 3; ++s) out.push_back(d.cell_inside[d.facets[6 * s].shell]);
+    return out;
+  };
+  PlcDomain parity = build_domain(nest);
+  EXPECT_FALSE(parity.cells_by_hole_points);
+  EXPECT_EQ(inside(parity), (std::vector<int>{1, 0, 1}));
+  EXPECT_EQ(separates(parity), (std::vector<int>{1, 1, 1}));
+
+  nest.enclosure = Enclosure::HolePoints;
+  PlcDomain cells = build_domain(nest);
+  EXPECT_TRUE(cells.cells_by_hole_points);
+  EXPECT_EQ(inside(cells), (std::vector<int>{1, 1, 1}));
+  EXPECT_EQ(separates(cells), (std::vector<int>{1, 0, 0}));
+  for (const DomainSegment& s : cells.segments)
+    for (const HalfFacet& h : s.sides)
+      if (!cells.facets[h.facet].separates) {
+        EXPECT_EQ(h.inside_after, 1);
+      }
+
+  Plc mid = nest;
+  mid.holes.push_back({3, 3, 3});  // the middle region is a void: all three separate
+  const PlcDomain m = build_domain(mid);
+  EXPECT_EQ(inside(m), (std::vector<int>{1, 0, 1}));
+  EXPECT_EQ(separates(m), (std::vector<int>{1, 1, 1}));
+  PlcRegion r;
+  r.point = {5, 5, 5};  // in the innermost box: a region, inside Ω
+  mid.regions.push_back(r);
+  EXPECT_EQ(error_of(mid), "");
+  mid.regions[0].point = {3, 3, 3};  // in the void
+  EXPECT_NE(error_of(mid).find("lies outside the domain"), std::string::npos);
+
+  Plc outer = nest;
+  outer.holes.push_back({1, 1, 1});  // the outer box's surface bounds no region
+  EXPECT_NE(error_of(outer).find("has no domain on either side"), std::string::npos)
+      << error_of(outer);
+}
+
 TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {
   // A standalone segment along the diagonal of the top of a box: it lies in the top facet
   // whether or not the facet's triangulation happens to use that diagonal.
