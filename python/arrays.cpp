@@ -182,6 +182,7 @@ std::vector<int> to_ints(const py::handle& obj, const char* what) {
 Plc to_plc(const py::handle& points, const py::handle& facets, const py::handle& holes) {
   Plc plc;
   plc.source = kArraySource;
+  plc.enclosure = Enclosure::HolePoints;  // as a .poly reads
   plc.points = to_points(points, "points");
   if (!facets.is_none()) {
     if (!is_sequence(facets) && !py::isinstance<py::array>(facets))
@@ -200,7 +201,26 @@ Plc to_domain(const py::handle& obj) {
     if (!d.contains("points") || !d.contains("facets"))
       throw py::value_error("domain: a dict needs 'points' and 'facets' (as pdr.read returns)");
     const py::object holes = d.contains("holes") ? py::object(d["holes"]) : py::object(py::none());
-    return to_plc(d["points"], d["facets"], holes);
+    Plc plc = to_plc(d["points"], d["facets"], holes);
+    if (d.contains("enclosure")) {
+      const std::string e = py::str(d["enclosure"]);
+      if (e != "hole_points" && e != "parity")
+        throw py::value_error("domain['enclosure']: expected 'hole_points' or 'parity'");
+      plc.enclosure = e == "parity" ? Enclosure::Parity : Enclosure::HolePoints;
+    }
+    if (d.contains("regions") && !d["regions"].is_none())
+      for (const py::handle r : py::iter(d["regions"])) {
+        const py::dict rd = py::reinterpret_borrow<py::dict>(r);
+        PlcRegion region;
+        const py::sequence at = py::reinterpret_borrow<py::sequence>(rd["point"]);
+        if (py::len(at) != 3) throw py::value_error("domain['regions'][i]['point']: expected (x, y, z)");
+        for (int k = 0; k < 3; ++k) region.point[k] = py::float_(at[k]).cast<double>();
+        region.attribute = rd.contains("attribute") ? py::float_(rd["attribute"]).cast<double>() : 0.0;
+        if (rd.contains("max_volume") && !rd["max_volume"].is_none())
+          region.max_volume = py::float_(rd["max_volume"]).cast<double>();
+        plc.regions.push_back(region);
+      }
+    return plc;
   }
   if (is_sequence(obj)) {
     const py::sequence s = py::reinterpret_borrow<py::sequence>(obj);
@@ -263,6 +283,7 @@ py::dict from_plc(const Plc& plc) {
     regions.append(region);
   }
   d["regions"] = regions;
+  d["enclosure"] = plc.enclosure == Enclosure::Parity ? "parity" : "hole_points";
   d["point_markers"] = from_ints(plc.point_markers);
   return d;
 }

@@ -50,11 +50,13 @@ std::vector<Tri> to_tris(const py::handle& obj, const char* what);
 // One int per row (markers); None: none.
 std::vector<int> to_ints(const py::handle& obj, const char* what);
 
-// The PLC of points, facets and volume holes (None: no holes).
+// The PLC of points, facets and volume holes (None: no holes), read as a .poly is (every
+// bounded cell in which no hole point lies is meshed: Enclosure::HolePoints).
 Plc to_plc(const py::handle& points, const py::handle& facets, const py::handle& holes);
 
 // A domain argument: a path (io::read_domain), a (points, facets[, holes]) sequence, or a
-// dict with "points", "facets" and optionally "holes" (as pdr.read returns a domain).
+// dict with "points", "facets" and optionally "holes", "regions" and "enclosure" (as
+// pdr.read returns a domain).
 Plc to_domain(const py::handle& obj);
 
 py::array_t<double> from_points(const std::vector<Point>& points);
@@ -68,7 +70,8 @@ py::object from_ints(const std::vector<int>& values);
 py::dict from_mesh(const MeshData& mesh);
 
 // {"kind": "domain", "source", "points", "facets" (dicts as above), "holes", "regions",
-// "point_markers"}: the form to_plc and to_domain take back.
+// "enclosure" ("hole_points": TetGen's reading, "parity": a surface file's), "point_markers"}:
+// the form to_domain takes back.
 py::dict from_plc(const Plc& plc);
 
 // A JSON value as Python objects (dict, list, str, int, float, bool, None).

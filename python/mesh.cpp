@@ -54,10 +54,10 @@ py::dict mesh(const py::object& domain_or_points, const py::object& facets,
               const py::object& holes, app::MeshArgs args) {
   check_options(args.options);
   Plc plc;
-  if (is_path(domain_or_points)) {
+  if (is_path(domain_or_points) || py::isinstance<py::dict>(domain_or_points)) {
     if (!facets.is_none() || !holes.is_none())
-      throw py::value_error("mesh: give a domain file, or points with facets, not both");
-    plc = io::read_domain(to_path(domain_or_points));
+      throw py::value_error("mesh: give a domain (a file or a dict), or points with facets, not both");
+    plc = to_domain(domain_or_points);
   } else {
     plc = to_plc(domain_or_points, facets, holes);
   }

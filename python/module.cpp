@@ -60,7 +60,10 @@ Facets (a piecewise linear complex, as in a TetGen .poly file): facets[f] is one
 (a sequence of vertex indices), or a list of polygons (outer boundaries, inner polygons,
 2-vertex segments, 1-vertex points), or a dict {"polygons": [...], "holes": points in the
 facet's plane that mark inner polygons as holes, "marker": int}. holes are points inside
-the volume holes (voids). pdr.read(path) returns a domain in that form.
+the volume holes (voids); as in a .poly, a closed surface inside another bounds a second
+region unless a hole point lies in it. pdr.read(path) returns a domain as a dict of that
+form (with "regions" and "enclosure": "hole_points", or "parity" for a surface file, where
+an inner surface bounds a void), which pdr.mesh and pdr.check take back.
 
 Errors carry the command line's messages: pdr.InputError (a ValueError, with attributes
 file and line) for bad input; for arrays the file is "<arrays>" and a line is the 1-based
@@ -69,8 +72,8 @@ pdr.CapacityError and pdr.InternalError (RuntimeErrors) as exit 3 and 4 of `pdr 
 
 // pybind11 writes each function's signature above its docstring.
 constexpr const char* kMeshDoc = R"(`pdr mesh` on a domain: points (N x 3), facets and holes
-(see the module's doc), or a domain file as the only positional argument (.poly, .smesh,
-.off, .stl, .ply, .mesh, .msh). Every tet gets radius-edge ratio < ratio; max_volume and
+(see the module's doc), or a domain file or dict (as pdr.read returns) as the only
+positional argument (.poly, .smesh, .off, .stl, .ply, .obj, .mesh, .msh). Every tet gets radius-edge ratio < ratio; max_volume and
 size bound tet volumes and circumradii. check runs the exact checker against the domain and
 the order-independence check; audit checks Lemma 1 after every insertion.
 

@@ -86,6 +86,25 @@ def test_volume_hole_from_a_read_domain():
     assert pdr.check(m["points"], m["tets"], m["faces"], domain=d)["ok"]
 
 
+def test_nested_shells_as_a_poly_reads_them():
+    # Without its hole point the inner cube of cube-in-cube is a second region (TetGen's
+    # reading, for arrays as for a .poly); a dict read from a surface file keeps parity.
+    d = pdr.read(DATA_DIR / "cube-in-cube.poly")
+    assert d["enclosure"] == "hole_points"
+    m = pdr.mesh(d["points"], d["facets"])
+    assert m["status"] == "ok"
+    assert signed_volumes(m["points"], m["tets"]).sum() == pytest.approx(1000, abs=1e-9)
+    d["holes"] = np.zeros((0, 3))
+    d["enclosure"] = "parity"
+    m = pdr.mesh(d)
+    assert m["status"] == "ok"
+    assert signed_volumes(m["points"], m["tets"]).sum() == pytest.approx(1000 - 8, abs=1e-9)
+    r = pdr.read(DATA_DIR / "inclusion.poly")
+    assert len(r["regions"]) == 2
+    m = pdr.mesh(r)
+    assert set(np.unique(m["tet_regions"])) == {1, 2}
+
+
 def test_facets_with_several_polygons_and_a_facet_hole():
     # The unit cube with a square well 0.4 wide and 0.5 deep in its top: the top facet is
     # the outer square and the well's rim, with a facet hole point inside the rim; the
