@@ -33,6 +33,7 @@
 #include "geom/input_range.hpp"
 #include "io/error.hpp"
 #include "io/mesh_io.hpp"
+#include "mesh/tables.hpp"
 #include "refine/initial.hpp"
 #include "refine/quality.hpp"
 #include "refine/seq_refinement.hpp"
@@ -52,10 +53,25 @@ void check_range(const Plc& plc) {
                            "[2^-100, 2^100] (about 1e-30 .. 1e30); rescale the input");
 }
 
-// The in-domain tets and the subfacets (with their facets' markers) as a MeshData; with
-// region records in the input, each tet's region attribute too (app/regions.hpp).
+// The in-domain tets and the subfacets (with their facets' markers) as a MeshData: the
+// boundary faces, then the faces of internal facets (between two regions, as TetGen lists
+// them; oriented out of their lower tet slot); with region records in the input, each
+// tet's region attribute too (app/regions.hpp).
 MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc) {
   MeshData mesh = to_mesh_data(m.dt, m.inside);
+  {
+    const TetStore& s = m.dt.store();
+    for (TetId t = 0; t < s.slots(); ++t) {
+      if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
+      const VertexId* v = s.vertices(t);
+      for (int f = 0; f < 4; ++f) {
+        const TetId n = s.neighbour(t, f);
+        if (n < t || s.is_ghost(n) || !m.is_inside(n) || !m.face_subfacet(t, f)) continue;
+        const auto& fv = tables::kFaceVertex[f];
+        mesh.faces.push_back({v[fv[0]], v[fv[1]], v[fv[2]]});
+      }
+    }
+  }
   if (!plc.regions.empty()) {
     const std::vector<int> label = region_labels(m, plc.regions);
     const TetStore& s = m.dt.store();

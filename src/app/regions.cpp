@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "delaunay/walk.hpp"
 
@@ -15,19 +16,25 @@ std::vector<int> region_labels(const refine::VolumeMesh& m, std::span<const PlcR
   std::vector<std::uint32_t> comp(s.slots(), kNone);
   std::uint32_t count = 0;
   std::vector<TetId> queue;
+  std::vector<std::vector<std::uint32_t>> facets;  // per region: the facets it touches
   for (TetId t = 0; t < s.slots(); ++t) {
     if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t) || comp[t] != kNone) continue;
     comp[t] = count;
     queue.assign(1, t);
+    std::vector<std::uint32_t>& touched = facets.emplace_back();
     for (std::size_t i = 0; i < queue.size(); ++i)
       for (int f = 0; f < 4; ++f) {
-        const TetId n = s.neighbour(queue[i], f);
-        if (s.is_ghost(n) || !m.is_inside(n) || comp[n] != kNone ||
-            m.face_subfacet(queue[i], f))
+        if (const auto sf = m.face_subfacet(queue[i], f)) {
+          touched.push_back(m.surf.subfacet(*sf).facet);
           continue;
+        }
+        const TetId n = s.neighbour(queue[i], f);
+        if (s.is_ghost(n) || !m.is_inside(n) || comp[n] != kNone) continue;
         comp[n] = count;
         queue.push_back(n);
       }
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     ++count;
   }
   TetId start = 0;
@@ -47,9 +54,16 @@ std::vector<int> region_labels(const refine::VolumeMesh& m, std::span<const PlcR
     named[c] = 1;
     label[c] = static_cast<int>(a);
   }
-  int next = static_cast<int>(largest);
+  // Unnamed regions in the order of the facets they touch: a property of the domain, so
+  // the sequential and the parallel runs number them alike.
+  std::vector<std::uint32_t> unnamed;
   for (std::uint32_t c = 0; c < count; ++c)
-    if (!named[c]) label[c] = ++next;
+    if (!named[c]) unnamed.push_back(c);
+  std::sort(unnamed.begin(), unnamed.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return facets[a] < facets[b]; });
+  long next = largest;
+  for (const std::uint32_t c : unnamed)
+    label[c] = static_cast<int>(std::min<long>(++next, std::numeric_limits<int>::max()));
   std::vector<int> out(s.slots(), 0);
   for (TetId t = 0; t < s.slots(); ++t)
     if (comp[t] != kNone) out[t] = label[comp[t]];

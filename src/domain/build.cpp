@@ -234,6 +234,7 @@ PlcDomain build_domain(const Plc& plc, const PlcOptions& options) {
   detail::check_closed(dom);
   detail::orient_boundary(dom);
   detail::check_volume_holes(dom);
+  detail::check_enclosure(dom);
   detail::check_region_points(dom);
   return dom;
 }

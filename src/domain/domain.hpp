@@ -103,8 +103,8 @@ struct PlcDomain {
   std::vector<std::uint8_t> separates;               // per shell: Ω on one side only (else
                                                      // an internal shell: both sides alike)
   std::vector<std::uint8_t> void_shell;              // per shell: its cell is not in Ω
-  std::vector<std::uint8_t> shell_holes;             // per shell: volume hole points inside
-                                                     // it (saturating at 255)
+  std::vector<std::uint8_t> shell_holes;             // per shell: volume hole points in its
+                                                     // cell (saturating at 255)
   std::vector<std::uint32_t> tolerance_facets;       // faces planar only within tolerance
 
   std::optional<std::uint32_t> find_segment(std::uint32_t a, std::uint32_t b) const;

@@ -137,6 +137,22 @@ void sort_sides(const std::vector<Point>& pts, DomainSegment& s) {
   });
 }
 
+// A volume hole point must lie off every facet (a ray cast from it needs that).
+void check_hole_off_facets(const PlcDomain& dom, const RayCaster& rays, std::size_t i) {
+  const Plc& plc = dom.plc;
+  const Point& h = plc.holes[i];
+  const std::size_t line = i < plc.hole_lines.size() ? plc.hole_lines[i] : 0;
+  Box q;
+  q.add(h);
+  rays.bvh().for_overlapping(q, [&](std::uint32_t k) {
+    const FacetTri& t = rays.tri(rays.tris()[k]);
+    if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], h))
+      fail(plc, line,
+           "volume hole off facets: volume hole point " + std::to_string(i + 1) + " lies on " +
+               facet_name(plc, rays.tris()[k].facet) + "; move it into the void it marks");
+  });
+}
+
 // The innermost shell enclosing a point, from its ray's crossings per shell (-1: none).
 int innermost(const std::vector<int>& crossings, const std::vector<int>& depth) {
   int best = -1;
@@ -168,8 +184,9 @@ void classify_cells(PlcDomain& dom, const RayCaster& rays,
   dom.cells_by_hole_points = dom.plc.enclosure == Enclosure::HolePoints && manifold;
   std::vector<std::uint8_t> holed(shells, 0);
   if (dom.cells_by_hole_points)
-    for (const Point& h : dom.plc.holes) {
-      const int cell = innermost(rays.cast_axis(make_rat(h), 0, +1, -1), depth);
+    for (std::size_t i = 0; i < dom.plc.holes.size(); ++i) {
+      check_hole_off_facets(dom, rays, i);
+      const int cell = innermost(rays.cast_axis(make_rat(dom.plc.holes[i]), 0, +1, -1), depth);
       if (cell >= 0) holed[cell] = 1;
     }
   dom.cell_inside.assign(shells, 0);
@@ -328,22 +345,15 @@ void check_volume_holes(PlcDomain& dom) {
     const Point& h = plc.holes[i];
     const std::size_t line = i < plc.hole_lines.size() ? plc.hole_lines[i] : 0;
     const std::string which = "volume hole point " + std::to_string(i + 1);
-    Box q;
-    q.add(h);
-    rays.bvh().for_overlapping(q, [&](std::uint32_t k) {
-      const FacetTri& t = rays.tri(rays.tris()[k]);
-      if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], h))
-        fail(plc, line,
-             "volume hole off facets: " + which + " lies on " +
-                 facet_name(plc, rays.tris()[k].facet) + "; move it into the void it marks");
-    });
+    check_hole_off_facets(dom, rays, i);
     const std::vector<int> crossings = rays.cast_axis(make_rat(h), 0, +1, -1);
     int total = 0, enclosing = 0;
     for (std::size_t s = 0; s < crossings.size(); ++s) {
       total += crossings[s];
       enclosing += crossings[s] % 2;
-      if (crossings[s] % 2 != 0 && dom.shell_holes[s] < 255) ++dom.shell_holes[s];
     }
+    if (const int cell = innermost(crossings, dom.shell_depth); cell >= 0 && dom.shell_holes[cell] < 255)
+      ++dom.shell_holes[cell];
     if (enclosing == 0)
       fail(plc, line,
            "volume hole in a void: " + which +
@@ -355,6 +365,29 @@ void check_volume_holes(PlcDomain& dom) {
                " lies inside the domain (it is enclosed by an odd number of closed boundary "
                "surfaces), not in a void; pdr's domain is what the closed boundary encloses, "
                "so a hole point can only mark a void. Move it into the void or remove it");
+  }
+}
+
+void check_enclosure(const PlcDomain& dom) {
+  if (dom.plc.enclosure != Enclosure::HolePoints || dom.cells_by_hole_points) return;
+  // Read by parity although the file asks for hole points: refuse where the two readings
+  // differ, a shell bounding a void that no hole point marks.
+  std::string joint;
+  for (const DomainSegment& s : dom.segments)
+    if (s.sides.size() > 2) {
+      joint = "the segment from " + vertex_name(dom.plc, s.a) + " to " + vertex_name(dom.plc, s.b) +
+              " bounds " + std::to_string(s.sides.size()) + " facet sides";
+      break;
+    }
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f) {
+    const int c = dom.facets[f].shell;
+    if (c < 0 || !dom.void_shell[c] || dom.shell_holes[c] != 0) continue;
+    fail(dom.plc, dom.plc.facets[f].line,
+         "nested regions: the closed surface of " + facet_name(dom.plc, f) +
+             " lies inside another and no volume hole point lies in it, so TetGen reads it as a "
+             "second region; pdr meshes such regions only when every closed surface is a "
+             "2-manifold, and here " + joint + ". Add a hole point inside it to make it a "
+             "void, or separate the surfaces that touch");
   }
 }
 

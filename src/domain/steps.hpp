@@ -48,6 +48,7 @@ void check_closed(const PlcDomain& dom);
 // Orientation and step 7 (domain/orient.cpp).
 void orient_boundary(PlcDomain& dom);
 void check_volume_holes(PlcDomain& dom);
+void check_enclosure(const PlcDomain& dom);
 void check_region_points(const PlcDomain& dom);
 
 }  // namespace pdr::domain::detail

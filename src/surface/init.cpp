@@ -220,8 +220,7 @@ SurfaceInit init_surface(const domain::PlcDomain& dom, double d, const SurfaceOp
   }
   const double estimate = out.stats.graded ? out.stats.graded_estimate : out.stats.uniform_estimate;
   out.stats.vertex_cap = vertex_cap(out.mesh, estimate, options);
-  const double least =
-      std::max(static_cast<double>(out.mesh.vertex_count()), estimate / kEstimateOverLeast);
+  const double least = estimate / kEstimateOverLeast;
   if (least > static_cast<double>(out.stats.vertex_cap))
     throw SurfaceCapError(
         "surface.cap: before refinement: the " +

@@ -26,7 +26,7 @@
 // SurfaceOptions::max_vertices when that is set and smaller, and never above 2^31 (vertex
 // ids are 32-bit). Reaching it throws SurfaceCapError("surface.cap: <facet or segment>:
 // ..."). A mesh whose estimate already says it cannot fit is not started: when
-// max(V_input, estimate / kEstimateOverLeast) exceeds the cap, SurfaceCapError("surface.cap:
+// estimate / kEstimateOverLeast exceeds the cap, SurfaceCapError("surface.cap:
 // before refinement: ...") at once (a 10 x 10 x 0.001 plate reached the memory cap after
 // 88 s and 5.6 GB before). The finished meshes hold 0.24-0.44 times the estimate (the
 // data/ domains, a 100 x 1 x 1 bar, a box with a small void; uniform and graded; tested

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -246,6 +247,69 @@ TEST_F(Cli, MeshNoCheckSaysWhenTheGuardsLeftEncroachedElements) {
   EXPECT_EQ(c.code, 3) << c.out;
   EXPECT_NE(nlohmann::json::parse(c.out)["check_failed"].dump().find("encroachment."),
             std::string::npos) << c.out;
+}
+
+// Boxes as .poly text: each box's 8 corners, then its 6 faces (marker: the box's number).
+std::string boxes_poly(const std::vector<std::array<double, 6>>& boxes, const std::string& tail) {
+  std::ostringstream p;
+  p << 8 * boxes.size() << " 3 0 0\n";
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+    for (int k = 0; k < 8; ++k)
+      p << 8 * b + k + 1 << ' ' << boxes[b][k & 1 ? 3 : 0] << ' ' << boxes[b][k & 2 ? 4 : 1]
+        << ' ' << boxes[b][k & 4 ? 5 : 2] << '\n';
+  p << 6 * boxes.size() << " 1\n";
+  const int quads[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+    for (const auto& q : quads)
+      p << "1 0 " << b + 1 << "\n4 " << 8 * b + q[0] + 1 << ' ' << 8 * b + q[1] + 1 << ' '
+        << 8 * b + q[2] + 1 << ' ' << 8 * b + q[3] + 1 << '\n';
+  return p.str() + tail;
+}
+
+// The region label of each tet of PREFIX, by the box (index into `boxes`, or -1) holding
+// its centroid; each box's set of labels.
+std::vector<std::set<double>> labels_by_box(const std::string& prefix,
+                                            const std::vector<std::array<double, 6>>& boxes) {
+  const auto nodes = records(prefix + ".node");
+  const auto tets = records(prefix + ".ele");
+  std::vector<std::set<double>> out(boxes.size() + 1);
+  for (std::size_t i = 1; i < tets.size(); ++i) {
+    P3 c{0, 0, 0};
+    for (int k = 1; k <= 4; ++k)
+      for (int j = 0; j < 3; ++j) c[j] += nodes[static_cast<std::size_t>(tets[i][k])][j + 1] / 4;
+    std::size_t in = boxes.size();  // none
+    for (std::size_t b = boxes.size(); b-- > 0;)  // the innermost listed last
+      if (c[0] > boxes[b][0] && c[0] < boxes[b][3] && c[1] > boxes[b][1] && c[1] < boxes[b][4] &&
+          c[2] > boxes[b][2] && c[2] < boxes[b][5]) {
+        in = b;
+        break;
+      }
+    out[in].insert(tets[i].back());
+  }
+  return out;
+}
+
+// Unnamed regions are numbered above the largest attribute in the order of the facets they
+// touch, a property of the domain: three inclusions in a named matrix get 6, 7, 8 in file
+// order (numbered by tet slots, the first two came out swapped, and otherwise on 3 ranks).
+TEST_F(Cli, MeshNumbersUnnamedRegionsByTheirFacets) {
+  const std::vector<std::array<double, 6>> boxes = {
+      {0, 0, 0, 20, 10, 10}, {2, 2, 2, 6, 6, 6}, {8, 2, 2, 12, 6, 6}, {14, 2, 2, 18, 6, 6}};
+  write("three.poly", boxes_poly(boxes, "0\n1\n1 1 1 1 5 -1\n"));
+  const Outcome r = run("mesh " + path("three.poly") + " -o " + path("m") + " --max-volume 0.5");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto got = labels_by_box(path("m"), boxes);
+  EXPECT_EQ(got[0], (std::set<double>{5}));
+  EXPECT_EQ(got[1], (std::set<double>{6}));
+  EXPECT_EQ(got[2], (std::set<double>{7}));
+  EXPECT_EQ(got[3], (std::set<double>{8}));
+  EXPECT_TRUE(got[4].empty());
+  // The inclusions' facets (markers 2-4) are listed in .face, between two regions.
+  std::set<double> markers;
+  const auto faces = records(path("m.face"));
+  for (std::size_t i = 1; i < faces.size(); ++i) markers.insert(faces[i].back());
+  for (const double k : {1.0, 2.0, 3.0, 4.0}) EXPECT_TRUE(markers.count(k)) << k;
 }
 
 // Region attributes as TetGen's -A gives them: two boxes, a region point with attribute 7

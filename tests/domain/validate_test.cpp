@@ -540,6 +540,25 @@ TEST(PlcValidate, NestedShellsAreRegionsUnlessAHolePointEmptiesThem) {
   mid.regions[0].point = {3, 3, 3};  // in the void
   EXPECT_NE(error_of(mid).find("lies outside the domain"), std::string::npos);
 
+  Plc on_face = nest;
+  on_face.holes.push_back({6, 5, 5});  // on the innermost box: named, not a far surface
+  EXPECT_NE(error_of(on_face).find("volume hole point 1 lies on facet 15"), std::string::npos)
+      << error_of(on_face);
+
+  // Two boxes sharing an edge elsewhere make the file fall back to parity, where the
+  // unmarked inner boxes would be voids: refused rather than read otherwise than TetGen.
+  Plc pair = merge(box({20, 0, 0}, {21, 1, 1}), box({21, 1, 0}, {22, 2, 1}));
+  // The second box's corners (21, 1, 0) and (21, 1, 1) are the first's 2 and 6.
+  for (PlcFacet& f : pair.facets)
+    for (auto& poly : f.polygons)
+      for (auto& v : poly) v = v == 8 ? 2 : (v == 12 ? 6 : v);
+  Plc touching = merge(pair, nest);  // points 8 and 12 are left unused: isolated vertices
+  touching.points[8] = {30, 0, 0};
+  touching.points[12] = {30, 0, 1};
+  touching.enclosure = Enclosure::HolePoints;
+  relabel(touching);
+  EXPECT_NE(error_of(touching).find("nested regions"), std::string::npos) << error_of(touching);
+
   Plc outer = nest;
   outer.holes.push_back({1, 1, 1});  // the outer box's surface bounds no region
   EXPECT_NE(error_of(outer).find("has no domain on either side"), std::string::npos)
