@@ -137,20 +137,24 @@ void sort_sides(const std::vector<Point>& pts, DomainSegment& s) {
   });
 }
 
-// A volume hole point must lie off every facet (a ray cast from it needs that).
-void check_hole_off_facets(const PlcDomain& dom, const RayCaster& rays, std::size_t i) {
-  const Plc& plc = dom.plc;
-  const Point& h = plc.holes[i];
-  const std::size_t line = i < plc.hole_lines.size() ? plc.hole_lines[i] : 0;
+// A point given to mark a cell (a hole or region point) must lie off every facet (a ray
+// cast from it needs that): else fail(line, what + " lies on <facet>" + advice).
+void check_off_facets(const Plc& plc, const RayCaster& rays, const Point& p, std::size_t line,
+                      const std::string& what, const std::string& advice) {
   Box q;
-  q.add(h);
+  q.add(p);
   rays.bvh().for_overlapping(q, [&](std::uint32_t k) {
     const FacetTri& t = rays.tri(rays.tris()[k]);
-    if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], h))
-      fail(plc, line,
-           "volume hole off facets: volume hole point " + std::to_string(i + 1) + " lies on " +
-               facet_name(plc, rays.tris()[k].facet) + "; move it into the void it marks");
+    if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], p))
+      fail(plc, line, what + " lies on " + facet_name(plc, rays.tris()[k].facet) + advice);
   });
+}
+
+void check_hole_off_facets(const PlcDomain& dom, const RayCaster& rays, std::size_t i) {
+  const Plc& plc = dom.plc;
+  check_off_facets(plc, rays, plc.holes[i], i < plc.hole_lines.size() ? plc.hole_lines[i] : 0,
+                   "volume hole off facets: volume hole point " + std::to_string(i + 1),
+                   "; move it into the void it marks");
 }
 
 // The innermost shell enclosing a point, from its ray's crossings per shell (-1: none).
@@ -399,15 +403,8 @@ void check_region_points(const PlcDomain& dom) {
     const Point& p = plc.regions[i].point;
     const std::size_t line = plc.regions[i].line;
     const std::string which = "region point " + std::to_string(i + 1);
-    Box q;
-    q.add(p);
-    rays.bvh().for_overlapping(q, [&](std::uint32_t k) {
-      const FacetTri& t = rays.tri(rays.tris()[k]);
-      if (point_in_triangle(plc.points[t.v[0]], plc.points[t.v[1]], plc.points[t.v[2]], p))
-        fail(plc, line,
-             "region point in the domain: " + which + " lies on " +
-                 facet_name(plc, rays.tris()[k].facet) + "; move it into the region it names");
-    });
+    check_off_facets(plc, rays, p, line, "region point in the domain: " + which,
+                     "; move it into the region it names");
     const int cell = innermost(rays.cast_axis(make_rat(p), 0, +1, -1), dom.shell_depth);
     if (cell < 0 || !dom.cell_inside[cell])
       fail(plc, line,
