@@ -7,8 +7,8 @@
 // Ignored: texture and normal vertices (vt, vn, vp), groups and objects (g, o), smoothing
 // groups (s), materials (mtllib, usemtl), line and point elements (l, p), and any other
 // statement, so the files of every exporter read. A backslash at the end of a line
-// continues the statement and is refused (no exporter pdr knows writes it). '#' starts a
-// comment. Faces carry no markers.
+// continues the statement and is refused, in any statement (no exporter pdr knows writes
+// it). An index may carry a '+'. '#' starts a comment. Faces carry no markers.
 #include <string>
 #include <vector>
 
@@ -22,7 +22,8 @@ namespace {
 
 // The vertex index of one corner ("v", "v/vt", "v//vn", "v/vt/vn") as a 0-based index.
 std::uint32_t corner_index(const TextScanner& s, std::string_view tok, std::size_t nv) {
-  const std::string_view head = tok.substr(0, tok.find('/'));
+  std::string_view head = tok.substr(0, tok.find('/'));
+  if (head.size() > 1 && head[0] == '+') head.remove_prefix(1);
   std::int64_t v = 0;
   const auto [end, ec] = std::from_chars(head.data(), head.data() + head.size(), v);
   if (ec != std::errc() || end != head.data() + head.size() || head.empty())
@@ -66,7 +67,9 @@ Surface read_obj(const std::string& path) {
       }
       surf.add_face(corners, s.line(), 0);
     } else {
-      (void)s.rest_of_line();
+      const std::string_view rest = s.rest_of_line();
+      if (!rest.empty() && rest.back() == '\\')
+        s.fail("a line continued with '\\' is not supported; join it with the next line");
     }
   }
   return surf;

@@ -13,7 +13,7 @@
 //
 // This is the same mesh that inserting the committed points into M_o gives (the Delaunay
 // tetrahedralization of a point set is unique under the symbolic perturbation, and the
-// inside flags change only across subfacets, which the phase never adds): tested tet by
+// inside flags change only across subfacets, which the phase never adds or removes): tested tet by
 // tet against that insertion. It costs a pass over the tets instead of a point location
 // and a cavity per committed point.
 #pragma once

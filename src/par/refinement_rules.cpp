@@ -77,7 +77,8 @@ bool RefinementRules::accept(const Submesh& s, const Cavity& c) {
   for (const TetId t : c.conflict) {
     if (encroaches(s, t, c.point)) return false;
     // A subfacet face of a conflict tet survives only on the boundary (between two inside
-    // tets it cannot be, the flag changing across subfacets; checked all the same).
+    // conflict tets lies an internal facet, domain/domain.hpp, which the cavity would take
+    // out of T).
     const VertexId* v = st.vertices(t);
     if (!may_touch_d(s, v)) continue;
     for (int f = 0; f < 4; ++f) {

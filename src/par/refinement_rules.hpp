@@ -7,8 +7,7 @@
 // A tet is wanted when it is bad (refine/quality.hpp, exact: ratio >= B, or above the size
 // bounds). Its step inserts its circumcenter p. On the complete cavity of p, the step is
 // committed only when it is Fig. 2's "insert p" case:
-//   - every conflict tet lies inside Ω (so p does, and no subfacet separates two of them:
-//     the inside flag changes exactly across subfacets);
+//   - every conflict tet lies inside Ω (so p does);
 //   - p lies in no closed diametral ball of a subsegment that is an edge of a closure tet,
 //     and in no closed equatorial ball of a subfacet that is a face of one (the same exact
 //     predicates as the sequential step, refine/closure.hpp);

@@ -24,8 +24,9 @@
 //                    flags of the tets made meanwhile, from the flags of the tets around
 //                    them. While an element of D is missing from T, flags derived across
 //                    faces (refine/volume_mesh.hpp commit_point) can be wrong; they are
-//                    recomputed once T conforms again, by parity across subfacets from
-//                    the tets whose flags predate the break.
+//                    recomputed once T conforms again, toggling across the subfacets of
+//                    separating facets (face_flips) from the tets whose flags predate
+//                    the break.
 // The protected length (refine/split.hpp) does not hold these refinements: a finer mesh
 // near a sharp corner is a cost, a non-conforming one is a bug. Elements that stay missing
 // (the vertex cap stopped their refinement) make the output non-conforming there; the exact checker reports it and pdr mesh exits 3 with the
@@ -53,7 +54,7 @@ bool missing_at(const VolumeMesh& m, VertexId v, std::span<const TetId> star,
                 EncroachedLists& out);
 
 // Recomputes the inside flag of every live finite tet in `made` from its neighbours
-// outside `made` (ghosts are outside), toggling across subfacets; returns the live
+// outside `made` (ghosts are outside), toggling across face_flips faces; returns the live
 // finite tets of `made`, each once.
 std::vector<TetId> reflag(VolumeMesh& m, std::span<const TetId> made);
 

@@ -10,7 +10,8 @@
 //     not be: they are listed (VolumeMesh::missing_subfacets, missing_subsegments) and the
 //     refinement restores them first (refine/conformity.hpp);
 //   - classification: a flood fill from the ghost tets over all faces, the flag toggling
-//     across subfacets (the parity definition of Ω, domain/domain.hpp); on a conforming
+//     across the subfacets of separating facets (VolumeMesh::face_flips: the cells of Ω,
+//     domain/domain.hpp; an internal facet keeps it); on a conforming
 //     T_o an inconsistent parity (a face reached with two flags) throws
 //     RefineError("volume.parity: ..."); otherwise the flags are provisional;
 //   - volume holes (conforming T_o): the tet containing each hole point must be outside,

@@ -136,7 +136,7 @@ TEST(SurfaceFormats, Obj) {
   // Negative (relative) indices, the three corner forms, a vertex colour and a weight.
   const Plc plc = read_as(dir, "t.obj",
                           "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 1.0\nv 0 0 1\n"
-                          "f -4 -2 -3\nf 1//1 2//1 4//1\nf 2/1 3/1 4/1\nf 1/1/1 4/1/1 3/1/1\n");
+                          "f -4 -2 -3\nf 1//1 2//1 4//1\nf 2/1 3/1 4/1\nf +1/1/1 4/1/1 3/1/1\n");
   EXPECT_EQ(plc.facets.size(), 4u);
   EXPECT_EQ(plc.points.size(), 4u);
   EXPECT_EQ(plc.point_lines[1], 2u);
@@ -153,6 +153,8 @@ TEST(SurfaceFormats, Obj) {
   EXPECT_NE(m.find("x.obj:1:"), std::string::npos) << m;
   m = error_of("x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n 3\n");
   EXPECT_NE(m.find("x.obj:4: a line continued"), std::string::npos) << m;
+  m = error_of("x.obj", "v 0 0 0\nv 1 0 0\ng a \\\n b\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_NE(m.find("x.obj:3: a line continued"), std::string::npos) << m;
   m = error_of("x.obj", "# nothing\nv 0 0 0\n");
   EXPECT_NE(m, "");  // no faces
 }
