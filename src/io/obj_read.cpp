@@ -46,6 +46,14 @@ Surface read_obj(const std::string& path) {
   Surface surf;
   surf.source = path;
   std::vector<std::uint32_t> corners;
+  const auto continued = [&s] {
+    s.fail("a line continued with '\\' is not supported; join it with the next line");
+  };
+  // The rest of a statement's line, refused when a backslash continues it.
+  const auto rest_of_statement = [&s, &continued] {
+    const std::string_view rest = s.rest_of_line();
+    if (!rest.empty() && rest.back() == '\\') continued();
+  };
   while (s.next_line()) {
     const std::string_view kw = s.token("a statement");
     if (kw == "v") {
@@ -53,23 +61,18 @@ Surface read_obj(const std::string& path) {
       p[0] = s.number<double>("the x coordinate");
       p[1] = s.number<double>("the y coordinate");
       p[2] = s.number<double>("the z coordinate");
-      const std::string_view rest = s.rest_of_line();
-      if (!rest.empty() && rest.back() == '\\')
-        s.fail("a line continued with '\\' is not supported; join it with the next line");
+      rest_of_statement();  // a weight or a colour
       surf.add_point(p, s.line(), static_cast<std::int64_t>(surf.points.size() + 1));
     } else if (kw == "f") {
       corners.clear();
       while (s.has_token()) {
         const std::string_view tok = s.token("a face corner");
-        if (tok == "\\")
-          s.fail("a line continued with '\\' is not supported; join it with the next line");
+        if (tok == "\\") continued();
         corners.push_back(corner_index(s, tok, surf.points.size()));
       }
       surf.add_face(corners, s.line(), 0);
     } else {
-      const std::string_view rest = s.rest_of_line();
-      if (!rest.empty() && rest.back() == '\\')
-        s.fail("a line continued with '\\' is not supported; join it with the next line");
+      rest_of_statement();
     }
   }
   return surf;
