@@ -197,8 +197,9 @@ void check_closed(const PlcDomain& dom) {
     fail(plc, line,
          "closed boundary: " + seg + " bounds " + std::to_string(k) +
              " facet sides (" + others.str() +
-             "), an odd number; the boundary must be closed (internal facets that separate "
-             "two regions are not supported); remove or complete the extra facet");
+             "), an odd number; the boundary must be closed (a facet wall splitting a region "
+             "in two is not supported; a second region is a closed surface inside another, "
+             "with no hole point in it); remove or complete the extra facet");
   }
 }
 
