@@ -59,7 +59,8 @@ void check_range(const Plc& plc) {
 // tet's region attribute too (app/regions.hpp).
 MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc) {
   MeshData mesh = to_mesh_data(m.dt, m.inside);
-  {
+  const auto& facets = m.surf.facets;
+  if (std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; })) {
     const TetStore& s = m.dt.store();
     for (TetId t = 0; t < s.slots(); ++t) {
       if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
