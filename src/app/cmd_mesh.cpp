@@ -55,12 +55,14 @@ void check_range(const Plc& plc) {
 
 // The in-domain tets and the subfacets (with their facets' markers) as a MeshData: the
 // boundary faces, then the faces of internal facets (between two regions, as TetGen lists
-// them; oriented out of their lower tet slot); with region records in the input, each
-// tet's region attribute too (app/regions.hpp).
+// them; oriented out of their lower tet slot); with region records in the input, or
+// internal facets making several regions, each tet's region attribute too
+// (app/regions.hpp; TetGen's -A).
 MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc) {
   MeshData mesh = to_mesh_data(m.dt, m.inside);
   const auto& facets = m.surf.facets;
-  if (std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; })) {
+  const bool internal = std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; });
+  if (internal) {
     const TetStore& s = m.dt.store();
     for (TetId t = 0; t < s.slots(); ++t) {
       if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
@@ -73,7 +75,7 @@ MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc) {
       }
     }
   }
-  if (!plc.regions.empty()) {
+  if (!plc.regions.empty() || internal) {
     const std::vector<int> label = region_labels(m, plc.regions);
     const TetStore& s = m.dt.store();
     mesh.tet_regions.reserve(mesh.tets.size());

@@ -3,9 +3,9 @@
 // faces that are no subfacets (the refined facets separate regions). A region holding a
 // region point of the input gets that point's attribute (rounded to an integer; the first
 // such point wins); one holding none gets the next integer above the largest attribute
-// given, the regions ordered by the sorted lists of facets they touch (distinct for
-// distinct regions of a domain whose shells are closed 2-manifolds; a property of the
-// domain, not of the mesh, so every run numbers them alike). TetGen gives unnamed regions
+// given, the regions ordered by the sorted lists of facets they touch (a property of the
+// domain, not of the mesh, so every run numbers them alike; two regions bounded by the
+// very same facets, which walls inside facets can make, are ordered by their tets). TetGen gives unnamed regions
 // the numbers above the largest attribute too.
 #pragma once
 

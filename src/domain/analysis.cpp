@@ -64,14 +64,14 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
   r.facets = dom.face_count();
   for (const DomainFacet& f : dom.facets) r.triangles += f.tris.size();
   r.shells = dom.shells;
-  std::vector<std::uint8_t> reported(dom.shells, 0);
-  for (std::uint32_t f = 0; f < dom.facets.size(); ++f) {
-    const int s = dom.facets[f].shell;
-    if (s < 0 || reported[s] || !dom.void_shell[s]) continue;
-    reported[s] = 1;
-    ++r.voids;
-    if (dom.shell_holes[s] == 0) r.unmarked_voids.emplace_back(f, plc.facets[f].line);
-  }
+  std::vector<std::uint8_t> reported(dom.cells, 0);
+  for (std::uint32_t f = 0; f < dom.facets.size(); ++f)
+    for (const int c : dom.facets[f].cells) {
+      if (c < 0 || reported[c] || dom.cell_inside[c]) continue;
+      reported[c] = 1;
+      ++r.voids;
+      if (dom.cell_holes[c] == 0) r.unmarked_voids.emplace_back(f, plc.facets[f].line);
+    }
   r.volume_holes = plc.holes.size();
   for (const PlcFacet& f : plc.facets) r.facet_holes += f.holes.size();
   r.regions = plc.regions.size();

@@ -35,10 +35,11 @@ struct DomainReport {
   std::size_t standalone_segments = 0;  // segments on no facet
   std::size_t facets = 0;               // faces (facets with area)
   std::size_t triangles = 0;            // of the facets' triangulations
-  std::size_t shells = 0;               // connected closed surfaces
-  std::size_t voids = 0;                // shells whose inside is a void (enclosed twice, ...)
-  // A facet (and its line) of each void shell with no volume hole point inside: pdr leaves
-  // it empty as every void, where TetGen meshes it as a region of its own.
+  std::size_t shells = 0;               // connected boundary surfaces
+  std::size_t voids = 0;                // bounded cells outside Ω (enclosed twice, ...)
+  // A facet (and its line) of each void with no volume hole point inside (read by parity,
+  // from a surface file): pdr leaves it empty as every void, where TetGen meshes it as a
+  // region of its own.
   std::vector<std::pair<std::uint32_t, std::size_t>> unmarked_voids;
   std::size_t volume_holes = 0, facet_holes = 0, regions = 0;
   Point bbox_lo{}, bbox_hi{};           // of the boundary vertices

@@ -14,18 +14,19 @@
 //     readers list only the vertices their faces use);
 //   - components meet only in shared vertices and segments (no crossing facets, segments
 //     or stray vertices);
-//   - every segment bounds an even number of facet sides (a segment inside a face counts
-//     as two sides), so the boundary is a closed surface mod 2. The domain is, by
-//     plc.enclosure: the points from which a ray crosses it an odd number of times (voids
-//     are even); or, TetGen's reading, every bounded cell in which no volume hole point
-//     lies, so that a closed shell inside another bounds a second region and its facets
-//     are internal (`separates` false, both sides in Ω; applied when every shell is a
-//     closed 2-manifold, else parity);
-//   - every triangle of a separating facet knows which of its sides faces the domain
-//     (`inward`), and the facet sides around each segment are sorted by angle with the
-//     inside wedges marked (all of them around an internal shell's segments);
-//   - volume hole points lie strictly inside some closed shell, off every facet, and by
-//     parity in a void (even); region points lie inside the domain, off every facet.
+//   - every segment bounds at least two facet sides (a segment inside a face counts as
+//     two). The facets cut space into cells (domain/orient.cpp); the domain is, by
+//     plc.enclosure: the points from which a ray crosses the boundary an odd number of
+//     times (every segment then bounds an even number of sides, so the boundary is closed
+//     mod 2; voids are even); or, TetGen's reading, every bounded cell in which no volume
+//     hole point lies, so that a closed shell inside another, or a facet wall splitting a
+//     region, bounds a second region, and its facets are internal (`separates` false,
+//     both sides in Ω);
+//   - every triangle knows which of its sides faces the domain (`inward`; both do on an
+//     internal facet, which then reads +1), and the facet sides around each segment are
+//     sorted by angle with the inside wedges marked;
+//   - volume hole points lie in bounded cells, off every facet, and by parity in a void
+//     (even); region points lie inside the domain, off every facet.
 #pragma once
 
 #include <array>
@@ -65,8 +66,10 @@ struct DomainFacet {
   std::vector<FacetTri> tris;           // the facet's region (empty unless is_face)
   std::vector<std::uint32_t> segments;  // sorted ids of the segments the facet contains
   int shell = -1;                       // connected component of the boundary surface
-  bool separates = true;                // Ω lies on one side only (else an internal facet:
-                                        // a shell between two regions, domain.hpp cells)
+  std::array<int, 2> cells{-1, -1};     // the cells on its front (where its triangles'
+                                        // normals point) and back; -1: the unbounded one
+  bool separates = true;                // Ω lies on one side only (else an internal facet
+                                        // between two regions, both in Ω)
 };
 
 // One side of a face along a segment: the triangle of that face on the segment.
@@ -93,18 +96,12 @@ struct PlcDomain {
   std::vector<DomainSegment> segments;               // sorted by (a, b)
   std::vector<std::vector<std::uint32_t>> vertex_segments;  // per vertex, sorted
   std::vector<std::vector<std::uint32_t>> vertex_facets;    // faces containing it, sorted
-  std::size_t shells = 0;                            // closed surface components
-  // Cells (domain/orient.cpp): every shell is seen as bounding one cell, the points just
-  // inside it (with cells_by_hole_points each shell is a closed 2-manifold, and exactly so).
-  bool cells_by_hole_points = false;                 // plc.enclosure HolePoints applies
-  std::vector<int> shell_parent;                     // innermost shell around it, or -1
-  std::vector<int> shell_depth;                      // 1 + the shells around it
-  std::vector<std::uint8_t> cell_inside;             // per shell: its cell is in Ω
-  std::vector<std::uint8_t> separates;               // per shell: Ω on one side only (else
-                                                     // an internal shell: both sides alike)
-  std::vector<std::uint8_t> void_shell;              // per shell: its cell is not in Ω
-  std::vector<std::uint8_t> shell_holes;             // per shell: volume hole points in its
-                                                     // cell (saturating at 255)
+  std::size_t shells = 0;                            // connected boundary surfaces
+  // Cells (domain/orient.cpp): the bounded open regions the facets cut space into.
+  std::size_t cells = 0;
+  std::vector<std::uint8_t> cell_inside;             // per cell: in Ω
+  std::vector<std::uint8_t> cell_holes;              // per cell: volume hole points in it
+                                                     // (saturating at 255)
   std::vector<std::uint32_t> tolerance_facets;       // faces planar only within tolerance
 
   std::optional<std::uint32_t> find_segment(std::uint32_t a, std::uint32_t b) const;

@@ -45,10 +45,7 @@ void build_structure(const std::vector<FacetPolys>& polys, PlcDomain& dom);
 void check_crossings(const PlcDomain& dom);
 // Step 6 (domain/build.cpp).
 void check_closed(const PlcDomain& dom);
-// Orientation and step 7 (domain/orient.cpp).
+// Cells, orientation and step 7: volume hole and region points (domain/orient.cpp).
 void orient_boundary(PlcDomain& dom);
-void check_volume_holes(PlcDomain& dom);
-void check_enclosure(const PlcDomain& dom);
-void check_region_points(const PlcDomain& dom);
 
 }  // namespace pdr::domain::detail

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -404,6 +405,52 @@ TEST_F(Cli, MeshReadsNestedShellsAsTetGenInAPolyAndAsVoidsInASurface) {
   ASSERT_TRUE(k.contains("unmarked_voids")) << o.out;
   EXPECT_EQ(k["unmarked_voids"].size(), 1u);
   EXPECT_NEAR(mesh_volume(path("o")), 992, 1e-9);
+}
+
+// Facet walls split a region (data/walls.poly: three unit cubes in a row, walls at x = 1, 2,
+// three facet sides around each segment where a wall meets the outside): each cube is a
+// region with its own label, the walls are internal faces in .face, the volume is exact.
+TEST_F(Cli, MeshSplitsRegionsAtFacetWalls) {
+  const auto labels = [&](const std::string& prefix) {
+    const auto nodes = records(prefix + ".node");
+    const auto tets = records(prefix + ".ele");
+    std::map<std::pair<int, int>, std::size_t> seen;  // (cube, label) -> tets
+    for (std::size_t i = 1; i < tets.size(); ++i) {
+      double x = 0;
+      for (int k = 1; k <= 4; ++k) x += nodes[static_cast<std::size_t>(tets[i][k])][1] / 4;
+      ++seen[{static_cast<int>(x), tets[i].size() > 5 ? static_cast<int>(tets[i][5]) : -1}];
+    }
+    return seen;
+  };
+  const Outcome r = run("mesh " + data("walls.poly") + " -o " + path("m") + " --max-volume 0.01");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("check: pass"), std::string::npos) << r.out;
+  EXPECT_NEAR(mesh_volume(path("m")), 3, 1e-12);
+  std::set<std::pair<int, int>> named;
+  for (const auto& [key, n] : labels(path("m"))) named.insert(key);
+  EXPECT_EQ(named, (std::set<std::pair<int, int>>{{0, 1}, {1, 4}, {2, 3}}));
+  std::size_t wall_faces = 0;
+  const auto faces = records(path("m.face"));
+  for (std::size_t i = 1; i < faces.size(); ++i) wall_faces += faces[i].size() > 4 && faces[i][4] == 2;
+  EXPECT_GE(wall_faces, 4u);  // two unit squares, at least two triangles each
+
+  // Without region points the three regions are still labelled, in the order of the facets
+  // they touch; a hole point in the middle cube leaves its outer facets with no domain on
+  // either side: refused.
+  std::ifstream in(data("walls.poly"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t tail = text.rfind("0\n2\n");
+  ASSERT_NE(tail, std::string::npos);
+  write("plain.poly", text.substr(0, tail) + "0\n0\n");
+  const Outcome u = run("mesh " + path("plain.poly") + " -o " + path("u") + " --max-volume 0.05");
+  ASSERT_EQ(u.code, 0) << u.out;
+  named.clear();
+  for (const auto& [key, n] : labels(path("u"))) named.insert(key);
+  EXPECT_EQ(named, (std::set<std::pair<int, int>>{{0, 1}, {1, 2}, {2, 3}}));
+  write("hole.poly", text.substr(0, tail) + "1\n1 1.5 0.5 0.5\n0\n");
+  const Outcome h = run("mesh " + path("hole.poly") + " -o " + path("h"));
+  EXPECT_EQ(h.code, 2) << h.out;
+  EXPECT_NE(h.out.find("has no domain on either side"), std::string::npos) << h.out;
 }
 
 // Each malformed domain exits 2, names bad.poly and the line, and leaves nothing behind

@@ -504,22 +504,27 @@ TEST(PlcValidate, NestedShellsAreRegionsUnlessAHolePointEmptiesThem) {
   relabel(nest);
   const auto separates = [](const PlcDomain& d) {
     std::vector<int> out;
-    for (int s = 0; s < 3; ++s) out.push_back(d.separates[d.facets[6 * s].shell]);
+    for (int s = 0; s < 3; ++s) out.push_back(d.facets[6 * s].separates);
     return out;
   };
+  // The cell inside box s: the side of its facet 6s that box s - 1's facet does not touch.
   const auto inside = [](const PlcDomain& d) {
     std::vector<int> out;
-    for (int s = 0; s < 3; ++s) out.push_back(d.cell_inside[d.facets[6 * s].shell]);
+    for (int s = 0; s < 3; ++s) {
+      const std::array<int, 2> mine = d.facets[6 * s].cells;
+      const std::array<int, 2> around = s > 0 ? d.facets[6 * (s - 1)].cells : std::array<int, 2>{-1, -1};
+      const int c = (mine[0] == around[0] || mine[0] == around[1]) ? mine[1] : mine[0];
+      out.push_back(c >= 0 ? d.cell_inside[c] : -1);
+    }
     return out;
   };
   PlcDomain parity = build_domain(nest);
-  EXPECT_FALSE(parity.cells_by_hole_points);
+  EXPECT_EQ(parity.cells, 3u);
   EXPECT_EQ(inside(parity), (std::vector<int>{1, 0, 1}));
   EXPECT_EQ(separates(parity), (std::vector<int>{1, 1, 1}));
 
   nest.enclosure = Enclosure::HolePoints;
   PlcDomain cells = build_domain(nest);
-  EXPECT_TRUE(cells.cells_by_hole_points);
   EXPECT_EQ(inside(cells), (std::vector<int>{1, 1, 1}));
   EXPECT_EQ(separates(cells), (std::vector<int>{1, 0, 0}));
   for (const DomainSegment& s : cells.segments)
@@ -545,24 +550,84 @@ TEST(PlcValidate, NestedShellsAreRegionsUnlessAHolePointEmptiesThem) {
   EXPECT_NE(error_of(on_face).find("volume hole point 1 lies on facet 15"), std::string::npos)
       << error_of(on_face);
 
-  // Two boxes sharing an edge elsewhere make the file fall back to parity, where the
-  // unmarked inner boxes would be voids: refused rather than read otherwise than TetGen.
+  // Two boxes sharing an edge elsewhere (four facet sides around it) change nothing: each
+  // box is a region, and the nested boxes are regions as before.
   Plc pair = merge(box({20, 0, 0}, {21, 1, 1}), box({21, 1, 0}, {22, 2, 1}));
   // The second box's corners (21, 1, 0) and (21, 1, 1) are the first's 2 and 6.
   for (PlcFacet& f : pair.facets)
     for (auto& poly : f.polygons)
       for (auto& v : poly) v = v == 8 ? 2 : (v == 12 ? 6 : v);
-  Plc touching = merge(pair, nest);  // points 8 and 12 are left unused: isolated vertices
-  touching.points[8] = {30, 0, 0};
-  touching.points[12] = {30, 0, 1};
+  Plc touching = merge(nest, pair);  // points 32 and 36 are left unused: isolated vertices
+  touching.points[32] = {30, 0, 0};
+  touching.points[36] = {30, 0, 1};
   touching.enclosure = Enclosure::HolePoints;
   relabel(touching);
-  EXPECT_NE(error_of(touching).find("nested regions"), std::string::npos) << error_of(touching);
+  const PlcDomain t = build_domain(touching);
+  EXPECT_EQ(t.cells, 5u);
+  EXPECT_EQ(inside(t), (std::vector<int>{1, 1, 1}));
+  EXPECT_EQ(separates(t), (std::vector<int>{1, 0, 0}));
+  for (std::size_t f = 18; f < 30; ++f) EXPECT_TRUE(t.facets[f].separates) << f;
 
   Plc outer = nest;
   outer.holes.push_back({1, 1, 1});  // the outer box's surface bounds no region
   EXPECT_NE(error_of(outer).find("has no domain on either side"), std::string::npos)
       << error_of(outer);
+}
+
+// Facet walls splitting a region: three facet sides around a segment where a wall meets
+// the outer surface. Each cube of walled_box is a cell of its own; a wall between two
+// regions is internal, a wall next to a void separates.
+TEST(PlcValidate, FacetWallsSplitARegionIntoCells) {
+  const Plc three = walled_box(3);
+  const PlcDomain d = build_domain(three);
+  EXPECT_EQ(d.cells, 3u);
+  EXPECT_EQ(d.shells, 1u);
+  for (std::uint32_t f = 0; f < d.facets.size(); ++f)
+    EXPECT_EQ(d.facets[f].separates, f != 1 && f != 2) << f;
+  std::size_t joints = 0;
+  for (const DomainSegment& s : d.segments) {
+    int inside = 0;
+    for (const HalfFacet& h : s.sides) inside += h.inside_after > 0;
+    EXPECT_EQ(inside + 1, static_cast<int>(s.sides.size())) << s.a << "-" << s.b;
+    joints += s.sides.size() == 3;
+  }
+  EXPECT_EQ(joints, 8u);  // the two walls' edges
+
+  // A void cube next to a wall: inside a larger box, so that its outer facets too have the
+  // domain on one side. Facets 0-5 are the larger box, 6-8 the squares at x = 0, 1, 2.
+  Plc nested = merge(box({-1, -1, -1}, {3, 2, 2}), walled_box(2));
+  nested.enclosure = Enclosure::HolePoints;
+  nested.holes.push_back({1.5, 0.5, 0.5});  // the second cube is a void
+  relabel(nested);
+  const PlcDomain m = build_domain(nested);
+  EXPECT_EQ(m.cells, 3u);
+  for (std::uint32_t f = 0; f < m.facets.size(); ++f)
+    EXPECT_EQ(m.facets[f].separates, f != 6 && (f < 9 || f > 12)) << f;  // the first cube's
+  std::size_t inside = 0;
+  for (const std::uint8_t x : m.cell_inside) inside += x;
+  EXPECT_EQ(inside, 2u);
+  // In walled_box itself the void would leave its cube's bottom with no domain on either side.
+  Plc middle = three;
+  middle.holes.push_back({1.5, 0.5, 0.5});
+  relabel(middle);
+  EXPECT_NE(error_of(middle).find("facet 8 (line 208) has no domain on either side"), std::string::npos)
+      << error_of(middle);
+
+  Plc region = three;
+  PlcRegion r;
+  r.point = {2.5, 0.5, 0.5};
+  region.regions.push_back(r);
+  EXPECT_EQ(error_of(region), "");
+  Plc on_wall = three;
+  on_wall.holes.push_back({2, 0.5, 0.5});
+  relabel(on_wall);
+  EXPECT_NE(error_of(on_wall).find("lies on facet 2"), std::string::npos) << error_of(on_wall);
+
+  // Read by parity (a surface file), the odd count is refused with what to do.
+  Plc parity = three;
+  parity.enclosure = Enclosure::Parity;
+  EXPECT_NE(error_of(parity).find("bounds 3 facet sides"), std::string::npos) << error_of(parity);
+  EXPECT_NE(error_of(parity).find("read from a .poly"), std::string::npos);
 }
 
 TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {

@@ -1,6 +1,6 @@
 // Property (issue #11): for a valid closed domain OUTSIDE the theory (acute and reflex
 // corners, re-entrant edges above 270 degrees, tilted walls from random rotations, thin
-// slabs; tests/support/outside_fixtures.hpp), `pdr mesh` ends without an error in exit 0 or
+// slabs, regions split by facet walls; tests/support/outside_fixtures.hpp), `pdr mesh` ends without an error in exit 0 or
 // 3, with a mesh that passes every exact check of validity, Delaunay, conformity and
 // volume; only quality.ratio and encroachment.* may fail, and only with exit 3, which then
 // lists why (leftovers, unsplit). A second property runs rotated tori of triangle facets
@@ -97,6 +97,7 @@ TEST(OutsideProperty, EndsInExit0Or3WithAConformingDelaunayMesh) {
                "a domain outside the theory does not end in a conforming Delaunay mesh",
                [&] { return outside_failure(plc, z, &admissible); });
     RC_CLASSIFY(!admissible, "outside the theory");
+    RC_CLASSIFY(plc.enclosure == Enclosure::HolePoints, "regions split by facet walls");
   }, seed());
 }
 

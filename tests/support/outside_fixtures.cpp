@@ -101,12 +101,47 @@ rc::Gen<std::vector<P2d>> gen_tee(double min_corner) {
 
 }  // namespace
 
+Plc walled_prism(const std::vector<P2d>& profile, const std::vector<std::uint32_t>& walls, double z0,
+                 double z1) {
+  const auto n = static_cast<std::uint32_t>(profile.size());
+  std::vector<Point> p;
+  for (const double z : {z0, z1})
+    for (const P2d& q : profile) p.push_back({q[0], q[1], z});
+  p.push_back({0, 0, z0});  // 2n: the centre, below
+  p.push_back({0, 0, z1});  // 2n + 1: above
+  std::vector<FacetSpec> f;
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const std::uint32_t from = walls[k], to = walls[(k + 1) % walls.size()];
+    Poly below{2 * n}, above{2 * n + 1};
+    for (std::uint32_t i = from;; i = (i + 1) % n) {
+      below.push_back(i);
+      above.push_back(n + i);
+      if (i == to) break;
+    }
+    f.push_back({below});
+    f.push_back({above});
+  }
+  for (std::uint32_t i = 0; i < n; ++i) f.push_back({{i, (i + 1) % n, n + (i + 1) % n, n + i}});
+  for (const std::uint32_t w : walls) f.push_back({{2 * n, w, n + w, 2 * n + 1}});
+  Plc plc = make_plc(p, f);
+  plc.enclosure = Enclosure::HolePoints;
+  return plc;
+}
+
 rc::Gen<Plc> gen_outside_domain(double min_corner_deg) {
   return rc::gen::exec([min_corner_deg] {
-    const bool tee = *rc::gen::inRange(0, 3) == 0;
+    const int family = *rc::gen::inRange(0, 4);  // 0 a tee, 1 a walled star prism, else a star prism
+    const bool tee = family == 0;
     const std::vector<P2d> profile = tee ? *gen_tee(min_corner_deg) : star_polygon(static_cast<std::uint32_t>(*rc::gen::inRange(0, 1 << 30)), min_corner_deg);
     const double height = tee ? 5 + *rc::gen::inRange(0, 21) : 0.2 + *rc::gen::inRange(0, 29) / 10.0;
     Plc plc = prism(profile, 0, height);
+    if (family == 1) {
+      std::vector<std::uint32_t> walls;
+      for (std::uint32_t i = 0; i < profile.size(); ++i)
+        if (*rc::gen::inRange(0, 2) == 1) walls.push_back(i);
+      if (walls.size() < 2) walls = {0, static_cast<std::uint32_t>(profile.size() / 2)};
+      plc = walled_prism(profile, walls, 0, height);
+    }
     if (*rc::gen::inRange(0, 2) == 1) {
       const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
       const double a = angle(), b = angle(), c = angle();

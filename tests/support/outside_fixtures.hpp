@@ -6,6 +6,10 @@
 // are tilted and planar only within the reader's tolerance):
 //   - star prisms: a star-shaped polygon of 4..9 corners at random angles and radii,
 //     extruded along z by a random height (thin slabs included): acute and reflex corners;
+//   - walled star prisms: a star prism cut into regions by facet walls from its axis (the
+//     star's centre) to two or more of its corners, read as TetGen reads a .poly (each
+//     sector a region, the walls internal facets, three facet sides where a wall meets
+//     the caps and the sides);
 //   - tees after the paper's Fig. 8(b): a web and a flange whose undersides taper down from
 //     the web to the tips, so the web/underside edges are re-entrant above 270 degrees and
 //     the tips acute, extruded along z.
@@ -33,6 +37,11 @@ std::vector<P2d> tee_profile(double w, double yj, double f, double top, double y
 
 // p turned by the rotation with Euler angles (a, b, c) (radians), rounded to doubles.
 Plc rotated(Plc plc, double a, double b, double c);
+
+// The prism over a star-shaped profile (about the origin) cut by walls from the axis to the
+// corners `walls` (sorted, at least two): caps split into sectors, Enclosure::HolePoints.
+Plc walled_prism(const std::vector<P2d>& profile, const std::vector<std::uint32_t>& walls, double z0,
+                 double z1);
 
 rc::Gen<Plc> gen_outside_domain(double min_corner_deg);
 

@@ -54,6 +54,26 @@ Plc prism(const std::vector<P2d>& profile, double z0, double z1) {
   return make_plc(p, f);
 }
 
+Plc walled_box(std::uint32_t n) {
+  std::vector<Point> p;
+  for (std::uint32_t i = 0; i <= n; ++i) {
+    const double x = i;
+    for (const P2d& yz : {P2d{0, 0}, P2d{1, 0}, P2d{1, 1}, P2d{0, 1}}) p.push_back({x, yz[0], yz[1]});
+  }
+  std::vector<FacetSpec> f;
+  for (std::uint32_t i = 0; i <= n; ++i) f.push_back({{4 * i, 4 * i + 1, 4 * i + 2, 4 * i + 3}});
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t a = 4 * i, b = 4 * i + 4;
+    f.push_back({{a, b, b + 1, a + 1}});          // bottom, z = 0
+    f.push_back({{a + 3, b + 3, b + 2, a + 2}});  // top, z = 1
+    f.push_back({{a, b, b + 3, a + 3}});          // front, y = 0
+    f.push_back({{a + 1, b + 1, b + 2, a + 2}});  // back, y = 1
+  }
+  Plc plc = make_plc(p, f);
+  plc.enclosure = Enclosure::HolePoints;
+  return plc;
+}
+
 Plc merge(const Plc& a, const Plc& b) {
   Plc m = a;
   const auto off = static_cast<std::uint32_t>(a.points.size());

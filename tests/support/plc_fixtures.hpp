@@ -27,6 +27,11 @@ Plc box(const Point& lo, const Point& hi);
 // A prism over a simple polygon in the xy plane (any orientation), z in [z0, z1]: facet 0
 // the bottom cap, 1 the top cap, 2 + i the wall over profile edge i -> i+1.
 Plc prism(const std::vector<P2d>& profile, double z0, double z1);
+// The box [0,n]x[0,1]x[0,1] cut into n unit cubes by walls, read as TetGen reads a .poly
+// (Enclosure::HolePoints: each cube a region): facet i (0 <= i <= n) is the square at x = i
+// (walls for 0 < i < n), then per cube i the bottom, top, front (y = 0) and back (y = 1),
+// facets n + 1 + 4i ... n + 4 + 4i.
+Plc walled_box(std::uint32_t n);
 // Disjoint union: b's vertices are renumbered after a's, holes concatenated.
 Plc merge(const Plc& a, const Plc& b);
 // A file of data/ read by the TetGen reader.
