@@ -192,7 +192,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
         try {
-          mine = par::refine_part(vm, part, t, {opt.ratio, opt.size, opt.max_volume}, seed);
+          mine = par::refine_part(vm, part, t,
+                                  {opt.ratio, opt.size, opt.max_volume, opt.region_volumes.get()}, seed);
         } catch (const std::exception& e) {
           // Here, not after the transport's destructor: it would wait for sends and a
           // reduction round that the other ranks, waiting for this one, never complete.

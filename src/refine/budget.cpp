@@ -25,7 +25,7 @@ VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o
   box_share_ = std::cbrt(box) / 8;
   without_d_ = std::numeric_limits<double>::infinity();
   if (o.size) without_d_ = std::min(without_d_, *o.size / 2);
-  if (o.max_volume) without_d_ = std::min(without_d_, std::cbrt(*o.max_volume));
+  if (const auto v = smallest_volume(o)) without_d_ = std::min(without_d_, std::cbrt(*v));
   const double u = resolution_at(o.d);
   resolution_ = u;
   user_cap_ = o.max_vertices != 0;

@@ -88,6 +88,10 @@ bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
             const TetBounds& bounds) {
   const Measures m = filter::tet_measures(a, b, c, d);
   if (bounds.max_volume && volume_test(m, a, b, c, d, *bounds.max_volume)) return true;
+  if (bounds.regions && volume_test(m, a, b, c, d, bounds.regions->smallest())) {
+    const double v = bounds.regions->bound(a, b, c, d);
+    if (v > 0 && (v == bounds.regions->smallest() || volume_test(m, a, b, c, d, v))) return true;
+  }
   if (bounds.size && radius_test(m, a, b, c, d, *bounds.size)) return true;
   return ratio_test(m, a, b, c, d, bounds.ratio);
 }

@@ -4,7 +4,8 @@
 //
 //   ratio_at_least   R^2 >= B^2 lmin^2          (skinny: Fig. 2's loop condition)
 //   radius_above     R^2 >  L^2                 (size control, --size L)
-//   volume_above     volume6 > 6 V              (size control, --max-volume V)
+//   volume_above     volume6 > 6 V              (size control, --max-volume V, and the
+//                                               regional bounds: domain/cells.hpp)
 // With u = b-a, v = c-a, w = d-a, D = det[u,v,w] and X = |u|^2 v x w + |v|^2 w x u +
 // |w|^2 u x v, the circumcenter is a + X / (2D), so R^2 = |X|^2 / (4 D^2): every test is a
 // sign of a polynomial in the input doubles. Evaluation: the filters of
@@ -18,6 +19,7 @@
 
 #include <optional>
 
+#include "domain/cells.hpp"
 #include "geom/point.hpp"
 
 namespace pdr::refine {
@@ -27,6 +29,7 @@ struct TetBounds {
   double ratio = 2.0;
   std::optional<double> size;
   std::optional<double> max_volume;
+  const domain::RegionVolumes* regions = nullptr;  // regional volume bounds, when any
 };
 
 bool ratio_at_least(const Point& a, const Point& b, const Point& c, const Point& d,
@@ -35,7 +38,9 @@ bool radius_above(const Point& a, const Point& b, const Point& c, const Point& d
                   double size);
 bool volume_above(const Point& a, const Point& b, const Point& c, const Point& d,
                   double max_volume);
-// ratio_at_least || radius_above || volume_above, the measures computed once.
+// ratio_at_least || radius_above || volume_above (V, then the bound of the tet's region),
+// the measures computed once. A tet is located in its region only when its volume exceeds
+// the smallest regional bound.
 bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
             const TetBounds& bounds);
 

@@ -57,7 +57,7 @@ double theorem_h(const VolumeMesh& m, const RefineOptions& o) {
   }
   double h = std::sqrt(e2);
   if (o.size) h = std::min(h, *o.size / 2);
-  if (o.max_volume) h = std::min(h, std::cbrt(9 * std::sqrt(3.0) * *o.max_volume / 8) / 2);
+  if (const auto v = smallest_volume(o)) h = std::min(h, std::cbrt(9 * std::sqrt(3.0) * *v / 8) / 2);
   return h * (1 - 0x1p-30);
 }
 
@@ -288,7 +288,7 @@ class Refiner {
     // The cylinders are no wider than the element size asked for (refine/split.hpp).
     double cap = std::numeric_limits<double>::infinity();
     if (o_.size) cap = std::min(cap, *o_.size);
-    if (o_.max_volume) cap = std::min(cap, std::cbrt(*o_.max_volume));
+    if (const auto v = smallest_volume(o_)) cap = std::min(cap, std::cbrt(*v));
     guard_ = SplitGuard(
         m_.surf, acute, [b = budget_](double d) { return b.resolution_at(d) / 64; }, o_.cylinders, cap);
     const TetStore& s = m_.dt.store();
@@ -313,7 +313,7 @@ class Refiner {
 
   bool bad(TetId t) const {
     const VertexId* v = m_.dt.store().vertices(t);
-    TetBounds b{o_.ratio, o_.size, o_.max_volume};
+    TetBounds b{o_.ratio, o_.size, o_.max_volume, o_.region_volumes.get()};
     if (o_.interior && std::all_of(v, v + 4, [&](VertexId u) {
           return m_.vertex_class(u) == VertexClass::Interior;
         }))
@@ -600,6 +600,13 @@ void set_domain(RefineOptions& o, const domain::DomainAnalysis& an) {
   o.exact_theory = theorem_applies(an);
   o.acute_vertices = acute_vertices(an.report);
   o.cylinders = protecting_cylinders(an);
+  o.region_volumes = domain::RegionVolumes::of(an.domain);
+}
+
+std::optional<double> smallest_volume(const RefineOptions& o) {
+  std::optional<double> v = o.max_volume;
+  if (o.region_volumes) v = std::min(v.value_or(o.region_volumes->smallest()), o.region_volumes->smallest());
+  return v;
 }
 
 bool theorem_applies(const domain::DomainAnalysis& an) {

@@ -55,6 +55,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +71,8 @@ struct RefineOptions {
   double ratio = 2.0;                 // B
   std::optional<double> size;         // L: circumradius bound
   std::optional<double> max_volume;   // V
+  // Regional volume bounds (region records with a volume; set_domain), when any.
+  std::shared_ptr<const domain::RegionVolumes> region_volumes;
   bool audit = false;
   std::size_t max_vertices = 0;       // 0: derived cap
   double d = 0;                       // paper §2.1 d (for the derived cap and the audit)
@@ -98,6 +101,9 @@ struct RefineOptions {
   // tet missing here is never refined, and the leftovers list it ("never refined").
   std::optional<std::vector<TetId>> start_tets;
 };
+
+// The smallest volume bound of the run: V and the regional bounds; none when neither.
+std::optional<double> smallest_volume(const RefineOptions& o);
 
 // Theorem 1's hypotheses hold, and the refinement's constructions on ∂Ω are exact:
 // admissible, with no angle read as 90 or 270 degrees within tolerance, no facet accepted

@@ -407,6 +407,24 @@ TEST_F(Cli, MeshReadsNestedShellsAsTetGenInAPolyAndAsVoidsInASurface) {
   EXPECT_NEAR(mesh_volume(path("o")), 992, 1e-9);
 }
 
+// The largest tet volume per region attribute of the mesh PREFIX.node/.ele.
+std::map<int, double> largest_tet_by_label(const std::string& prefix) {
+  const auto nodes = records(prefix + ".node");
+  const auto tets = records(prefix + ".ele");
+  std::map<int, double> out;
+  for (std::size_t i = 1; i < tets.size(); ++i) {
+    P3 p[4];
+    for (int k = 0; k < 4; ++k) {
+      const auto& n = nodes[static_cast<std::size_t>(tets[i][k + 1])];
+      p[k] = {n[1], n[2], n[3]};
+    }
+    const double v = std::abs(dot(sub(p[1], p[0]), cross(sub(p[2], p[0]), sub(p[3], p[0])))) / 6;
+    double& m = out[tets[i].size() > 5 ? static_cast<int>(tets[i][5]) : -1];
+    m = std::max(m, v);
+  }
+  return out;
+}
+
 // Facet walls split a region (data/walls.poly: three unit cubes in a row, walls at x = 1, 2,
 // three facet sides around each segment where a wall meets the outside): each cube is a
 // region with its own label, the walls are internal faces in .face, the volume is exact.
@@ -429,6 +447,15 @@ TEST_F(Cli, MeshSplitsRegionsAtFacetWalls) {
   std::set<std::pair<int, int>> named;
   for (const auto& [key, n] : labels(path("m"))) named.insert(key);
   EXPECT_EQ(named, (std::set<std::pair<int, int>>{{0, 1}, {1, 4}, {2, 3}}));
+  // The first cube's region record bounds its tets' volume by 0.002 (the others by
+  // --max-volume 0.01): each tet meets its region's bound, and the first cube holds more.
+  const std::map<int, double> bound{{1, 0.002}, {3, 0.01}, {4, 0.01}};
+  const std::map<int, double> largest = largest_tet_by_label(path("m"));
+  ASSERT_EQ(largest.size(), 3u);
+  for (const auto& [label, v] : largest) EXPECT_LE(v, bound.at(label) * (1 + 1e-12)) << label;
+  EXPECT_GT(largest.at(4), 0.002);  // the bound is the region's, not the whole domain's
+  const auto count = labels(path("m"));
+  EXPECT_GT(count.at({0, 1}), 2 * count.at({2, 3}));
   std::size_t wall_faces = 0;
   const auto faces = records(path("m.face"));
   for (std::size_t i = 1; i < faces.size(); ++i) wall_faces += faces[i].size() > 4 && faces[i][4] == 2;

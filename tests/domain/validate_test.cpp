@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "domain/cells.hpp"
 #include "domain/distance.hpp"
 #include "domain/validate.hpp"
 #include "geom/predicates.hpp"
@@ -628,6 +629,27 @@ TEST(PlcValidate, FacetWallsSplitARegionIntoCells) {
   parity.enclosure = Enclosure::Parity;
   EXPECT_NE(error_of(parity).find("bounds 3 facet sides"), std::string::npos) << error_of(parity);
   EXPECT_NE(error_of(parity).find("read from a .poly"), std::string::npos);
+}
+
+// Regional volume bounds: a region record's volume bounds the cell its point lies in (the
+// smallest where two share a cell); a tet is located by its centroid, exactly.
+TEST(PlcCells, RegionVolumesBoundTheTetsOfTheirCell) {
+  Plc plc = walled_box(3);
+  EXPECT_EQ(RegionVolumes::of(build_domain(plc)), nullptr);
+  for (const auto& [x, v] : {std::pair{0.5, 0.1}, std::pair{0.25, 0.05}, std::pair{2.5, -1.0}}) {
+    PlcRegion r;
+    r.point = {x, 0.5, 0.5};
+    r.max_volume = v;
+    plc.regions.push_back(r);
+  }
+  const auto rv = RegionVolumes::of(build_domain(plc));
+  ASSERT_NE(rv, nullptr);
+  EXPECT_EQ(rv->smallest(), 0.05);
+  // A tet with a face on the wall x = 1 and its apex on either side of it.
+  const Point a{1, 0.2, 0.2}, b{1, 0.8, 0.2}, c{1, 0.5, 0.8};
+  EXPECT_EQ(rv->bound(a, b, c, {0.9, 0.5, 0.5}), 0.05);
+  EXPECT_EQ(rv->bound(a, b, c, {1.1, 0.5, 0.5}), 0.0);  // the middle cube: no bound
+  EXPECT_EQ(rv->bound({2.1, 0.1, 0.1}, {2.9, 0.1, 0.1}, {2.5, 0.9, 0.1}, {2.5, 0.5, 0.9}), 0.0);
 }
 
 TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {
