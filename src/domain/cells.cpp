@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
-#include <stdexcept>
 
 #include "geom/predicates.hpp"
 
@@ -93,10 +92,14 @@ void Cells::join_sides() {
   Joins joins(2 * n);
   for (std::size_t f = 0; f < dom_.facets.size(); ++f)
     for (std::size_t t = 0; t < dom_.facets[f].tris.size(); ++t)
-      for (std::int32_t nb : dom_.facets[f].tris[t].nbr)
-        if (nb >= 0)
-          for (int side : {+1, -1})
-            joins.join(side_node(offset_[f] + t, side), side_node(offset_[f] + static_cast<std::size_t>(nb), side));
+      for (int e = 0; e < 3; ++e) {
+        // Across a segment inside the facet the wedges around it join the sides (a wall
+        // may stand on it).
+        const FacetTri& x = dom_.facets[f].tris[t];
+        if (x.nbr[e] < 0 || x.on_segment[e]) continue;
+        for (int side : {+1, -1})
+          joins.join(side_node(offset_[f] + t, side), side_node(offset_[f] + static_cast<std::size_t>(x.nbr[e]), side));
+      }
   for (const DomainSegment& s : dom_.segments)
     for (std::size_t i = 0; i < s.sides.size() && s.sides.size() >= 2; ++i) {
       const HalfFacet &x = s.sides[i], &y = s.sides[(i + 1) % s.sides.size()];
@@ -143,12 +146,16 @@ void Cells::seed_components() {
     if (seed[a] < 0) seed[a] = static_cast<std::int64_t>(2 * g);
     if (seed[b] < 0) seed[b] = static_cast<std::int64_t>(2 * g + 1);
   }
+  // A component whose every triangle has both sides in it (a 2-complex enclosing no
+  // volume, Bing's house) bounds no cell of its own: seeded off any triangle, it is an
+  // inner boundary of the cell around it (its surface mod 2 is empty, so never outer).
+  for (std::size_t g = 0; g < offset_.back(); ++g)
+    if (seed[comp_[2 * g]] < 0) seed[comp_[2 * g]] = static_cast<std::int64_t>(2 * g);
   const std::vector<Point>& pts = dom_.plc.points;
   odd_.resize(comps_);
   seed_total_.resize(comps_);
   is_outer_.assign(comps_, 0);
   for (std::size_t k = 0; k < comps_; ++k) {
-    if (seed[k] < 0) throw std::logic_error("plc_orient: a surface component with no one-sided triangle");
     const auto node = static_cast<std::size_t>(seed[k]);
     const std::size_t g = node / 2;
     const TriRef r = rays_.tris()[g];

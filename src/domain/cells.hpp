@@ -13,7 +13,8 @@
 //      iff x runs a->b) and y's side facing back. A connected set of sides ("component")
 //      lies in the closure of one cell. Its one-sided triangles (those whose other side
 //      is another component) form a surface closed mod 2: each wedge adds two sides of a
-//      segment, and a triangle with both sides in it cancels;
+//      segment, and a triangle with both sides in it cancels. (Within a facet, sides are
+//      not joined across a segment lying in it: the wedges around it do that.);
 //   3. each component is seeded by an exact ray leaving a rational point inside one of its
 //      one-sided triangles on its side, along the axis of that triangle's largest normal
 //      component, counting crossings per component (orient3d / orient2d of the rational

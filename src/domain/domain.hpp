@@ -70,6 +70,8 @@ struct DomainFacet {
                                         // normals point) and back; -1: the unbounded one
   bool separates = true;                // Ω lies on one side only (else an internal facet
                                         // between two regions, both in Ω)
+  std::int64_t part_of = -1;            // a part of that input facet, whose parts bound
+                                        // different cells (domain/orient.cpp); -1: whole
 };
 
 // One side of a face along a segment: the triangle of that face on the segment.

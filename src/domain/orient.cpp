@@ -9,6 +9,7 @@
 // facet sides around each segment are sorted by angle about a->b (exact: orient3d against
 // a reference side, then pairwise).
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "domain/cells.hpp"
@@ -118,7 +119,9 @@ void mark_inside(PlcDomain& dom, const Cells& cells) {
     const bool front = inside(F.cells[0]), back = inside(F.cells[1]);
     if (!front && !back)
       fail(dom.plc, dom.plc.facets[f].line,
-           "volume holes: " + facet_name(dom.plc, f) +
+           "volume holes: " +
+               (F.part_of >= 0 ? "a part of " + facet_name(dom.plc, static_cast<std::size_t>(F.part_of))
+                               : facet_name(dom.plc, f)) +
                " has no domain on either side (volume hole points mark the regions on both "
                "sides of it, or it lies in a void); remove that surface or the hole point "
                "that empties the region it bounds");
@@ -147,15 +150,111 @@ void check_region_points(const PlcDomain& dom, const Cells& cells) {
   }
 }
 
+
+// A facet whose triangles bound different pairs of cells (two polygons in different
+// regions, or a face crossed by a wall's foot) is split into one facet per pair, so that
+// every facet separates or is internal as a whole: the first part keeps its index, the
+// others are appended, copies of its record without polygons (same marker and line).
+// Returns whether any facet was split.
+bool split_mixed_facets(PlcDomain& dom, const Cells& cells) {
+  bool any = false;
+  const std::size_t count = dom.facets.size();
+  for (std::uint32_t f = 0; f < count; ++f) {
+    const std::size_t n = dom.facets[f].tris.size();
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<std::uint32_t> part(n), local(n);
+    for (std::uint32_t t = 0; t < n; ++t) {
+      const std::pair<int, int> key{cells.cell_of_side(f, t, +1), cells.cell_of_side(f, t, -1)};
+      const auto it = std::find(pairs.begin(), pairs.end(), key);
+      part[t] = static_cast<std::uint32_t>(it - pairs.begin());
+      if (it == pairs.end()) pairs.push_back(key);
+    }
+    if (pairs.size() < 2) continue;
+    any = true;
+    const DomainFacet whole = dom.facets[f];
+    std::vector<std::uint32_t> id(pairs.size(), f);
+    for (std::size_t k = 1; k < pairs.size(); ++k) {
+      id[k] = static_cast<std::uint32_t>(dom.facets.size());
+      dom.facets.push_back({});
+      PlcFacet copy = dom.plc.facets[f];
+      copy.polygons.clear();
+      copy.holes.clear();
+      dom.plc.facets.push_back(std::move(copy));
+      if (std::binary_search(dom.tolerance_facets.begin(), dom.tolerance_facets.end(), f))
+        dom.tolerance_facets.push_back(id[k]);
+    }
+    std::vector<std::uint32_t> size(pairs.size(), 0);
+    for (std::uint32_t t = 0; t < n; ++t) local[t] = size[part[t]]++;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      DomainFacet& F = dom.facets[id[k]];
+      F = whole;
+      F.part_of = f;
+      F.tris.clear();
+      F.vertices.clear();
+      F.segments.clear();
+      for (std::uint32_t t = 0; t < n; ++t) {
+        if (part[t] != k) continue;
+        FacetTri x = whole.tris[t];
+        for (int e = 0; e < 3; ++e) {
+          if (x.nbr[e] >= 0)
+            x.nbr[e] = part[x.nbr[e]] == k ? static_cast<std::int32_t>(local[x.nbr[e]]) : -1;
+          if (x.on_segment[e])
+            if (const auto sg = dom.find_segment(x.v[(e + 1) % 3], x.v[(e + 2) % 3])) F.segments.push_back(*sg);
+        }
+        F.vertices.insert(F.vertices.end(), x.v.begin(), x.v.end());
+        F.tris.push_back(x);
+      }
+      if (k == 0)  // 1-vertex polygons, and any segment no triangle holds, stay with the first part
+        for (const std::uint32_t v : whole.vertices) F.vertices.push_back(v);
+      std::sort(F.vertices.begin(), F.vertices.end());
+      F.vertices.erase(std::unique(F.vertices.begin(), F.vertices.end()), F.vertices.end());
+      if (k == 0)
+        for (const std::uint32_t sg : whole.segments) {
+          const DomainSegment& S = dom.segments[sg];
+          bool held = false;
+          for (const HalfFacet& h : S.sides) held = held || h.facet == f;
+          if (!held) F.segments.push_back(sg);
+        }
+      std::sort(F.segments.begin(), F.segments.end());
+      F.segments.erase(std::unique(F.segments.begin(), F.segments.end()), F.segments.end());
+    }
+    for (const std::uint32_t sg : whole.segments) {
+      DomainSegment& S = dom.segments[sg];
+      S.facets.clear();
+      for (HalfFacet& h : S.sides) {
+        if (h.facet == f) {
+          const std::uint32_t t = h.tri;
+          h.facet = id[part[t]];
+          h.tri = local[t];
+        }
+        S.facets.push_back(h.facet);
+      }
+      std::sort(S.facets.begin(), S.facets.end());
+      S.facets.erase(std::unique(S.facets.begin(), S.facets.end()), S.facets.end());
+    }
+    for (const std::uint32_t v : whole.vertices) {
+      std::vector<std::uint32_t>& vf = dom.vertex_facets[v];
+      vf.erase(std::remove(vf.begin(), vf.end(), f), vf.end());
+      for (std::size_t k = 0; k < pairs.size(); ++k)
+        if (std::binary_search(dom.facets[id[k]].vertices.begin(), dom.facets[id[k]].vertices.end(), v))
+          vf.push_back(id[k]);
+      std::sort(vf.begin(), vf.end());
+    }
+  }
+  std::sort(dom.tolerance_facets.begin(), dom.tolerance_facets.end());
+  return any;
+}
+
 }  // namespace
 
 void orient_boundary(PlcDomain& dom) {
   for (DomainSegment& s : dom.segments) sort_sides(dom.plc.points, s);
+  std::optional<Cells> cells(std::in_place, dom);
+  if (split_mixed_facets(dom, *cells)) cells.emplace(dom);  // the same cells, renumbered triangles
   number_shells(dom);
-  const Cells cells(dom);
-  locate_holes(dom, cells);
-  mark_inside(dom, cells);
-  check_region_points(dom, cells);
+  locate_holes(dom, *cells);
+  mark_inside(dom, *cells);
+  check_region_points(dom, *cells);
 }
 
 }  // namespace pdr::domain::detail

@@ -14,6 +14,7 @@
 #include "domain/distance.hpp"
 #include "domain/validate.hpp"
 #include "geom/predicates.hpp"
+#include "io/mesh_io.hpp"
 #include "support/plc_fixtures.hpp"
 
 namespace pdr::domain::test {
@@ -650,6 +651,42 @@ TEST(PlcCells, RegionVolumesBoundTheTetsOfTheirCell) {
   EXPECT_EQ(rv->bound(a, b, c, {0.9, 0.5, 0.5}), 0.05);
   EXPECT_EQ(rv->bound(a, b, c, {1.1, 0.5, 0.5}), 0.0);  // the middle cube: no bound
   EXPECT_EQ(rv->bound({2.1, 0.1, 0.1}, {2.9, 0.1, 0.1}, {2.5, 0.9, 0.1}, {2.5, 0.5, 0.9}), 0.0);
+}
+
+// Walls meeting facets inside them, facets of two cells, and 2-complexes enclosing no
+// volume (the review's counterexamples, tests/regress/outside-walls-*.poly).
+TEST(PlcCells, WallsInsideFacetsFacetsOfTwoCellsAndEmptyComplexes) {
+  const auto regress = [](const std::string& name) {
+    return io::read_domain(std::string(PDR_SOURCE_DIR) + "/tests/regress/" + name);
+  };
+  // A wall's foot inside a face: two cells, not one.
+  const Plc foot = regress("outside-walls-foot-inside-facets.poly");
+  EXPECT_EQ(build_domain(foot).cells, 2u);
+
+  // One facet of two polygons, under a void and under a region: split into two parts, the
+  // first separating (Ω below, the void above) and the second internal.
+  const Plc two = regress("outside-walls-facet-of-two-cells.poly");
+  const PlcDomain d = build_domain(two);
+  ASSERT_EQ(d.facets.size(), two.facets.size() + 1);
+  const DomainFacet& added = d.facets.back();
+  ASSERT_GE(added.part_of, 0);
+  const DomainFacet& first = d.facets[static_cast<std::size_t>(added.part_of)];
+  EXPECT_NE(first.separates, added.separates);
+  EXPECT_EQ(d.plc.facets.back().marker, two.facets[static_cast<std::size_t>(added.part_of)].marker);
+  for (const DomainSegment& s : d.segments)
+    for (const HalfFacet& h : s.sides) EXPECT_LT(h.tri, d.facets[h.facet].tris.size());
+
+  // Bing's house inside a box: one cell; its facets internal, the box's separate.
+  const Plc house = regress("outside-walls-bings-house-in-box.poly");
+  const PlcDomain b = build_domain(house);
+  EXPECT_EQ(b.cells, 1u);
+  std::size_t internal = 0;
+  for (const DomainFacet& f : b.facets) internal += !f.separates;
+  EXPECT_EQ(internal, b.facets.size() - 6);
+  // Alone it bounds no region: refused.
+  Plc alone = house;
+  alone.facets.resize(alone.facets.size() - 6);
+  EXPECT_NE(error_of(alone).find("has no domain on either side"), std::string::npos) << error_of(alone);
 }
 
 TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {
