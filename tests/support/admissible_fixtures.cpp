@@ -114,13 +114,46 @@ Plc hex_on_slab(double unit, bool rounded) {
 
 }  // namespace
 
+// nx x ny x nz cubes of side `unit`, each a region of its own: every face of every cube a
+// square facet (walls between cubes, three or four facet sides around their edges), read as
+// TetGen reads a .poly; with `hole`, the middle cube (all counts odd and >= 3) is a void.
+Plc walled_grid(double unit, int nx, int ny, int nz, bool hole) {
+  const auto id = [&](int i, int j, int k) { return static_cast<std::uint32_t>((k * (ny + 1) + j) * (nx + 1) + i); };
+  std::vector<Point> p;
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) p.push_back({i * unit, j * unit, k * unit});
+  std::vector<FacetSpec> f;
+  for (int k = 0; k <= nz; ++k)  // faces normal to z
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) f.push_back({{id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k)}});
+  for (int j = 0; j <= ny; ++j)  // normal to y
+    for (int k = 0; k < nz; ++k)
+      for (int i = 0; i < nx; ++i) f.push_back({{id(i, j, k), id(i + 1, j, k), id(i + 1, j, k + 1), id(i, j, k + 1)}});
+  for (int i = 0; i <= nx; ++i)  // normal to x
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j) f.push_back({{id(i, j, k), id(i, j + 1, k), id(i, j + 1, k + 1), id(i, j, k + 1)}});
+  Plc plc = make_plc(p, f);
+  plc.enclosure = Enclosure::HolePoints;
+  if (hole && nx % 2 == 1 && ny % 2 == 1 && nz % 2 == 1 && std::min({nx, ny, nz}) >= 3) {
+    plc.holes.push_back({nx * unit / 2, ny * unit / 2, nz * unit / 2});
+    relabel(plc);
+  }
+  return plc;
+}
+
 rc::Gen<Plc> gen_admissible_domain(bool rounded_hexagons) {
   return rc::gen::exec([rounded_hexagons] {
     static const double units[] = {1.0, 0.5, 0.3, 1.25, 0.1};
     const double unit = units[*rc::gen::inRange(0, 5)];
-    const int kind = *rc::gen::inRange(0, 4);
+    const int kind = *rc::gen::inRange(0, 5);
     int width = 0;
     if (kind == 0) return voxel_solid(unit, width);
+    if (kind == 4) {
+      const auto n = [] { return *rc::gen::inRange(1, 4); };
+      const int nx = n(), ny = n(), nz = n();
+      return walled_grid(unit, nx, ny, nz, *rc::gen::inRange(0, 2) == 1);
+    }
     const double z1 = *rc::gen::inRange(1, 4) * unit;
     if (kind == 1) return hex_prism(hexagon(unit, rounded_hexagons), 0, 0, 0, z1);
     if (kind == 2) return hex_on_slab(unit, rounded_hexagons);

@@ -10,7 +10,10 @@
 //   - hexagonal prisms: a rotated regular hexagon (walls tilted in x/y, coordinates not
 //     representable, angles 120 degrees) or an integer hexagon (angles >= 90 degrees),
 //     extruded along z, alone, standing on a slab (the slab's top facet has a hexagonal
-//     hole where the prism's walls meet it), or next to a voxel solid.
+//     hole where the prism's walls meet it), or next to a voxel solid;
+//   - walled grids: up to 3x3x3 cubes, each a region, every face a square facet (walls
+//     between the cubes; three or four facet sides around their edges), the middle cube
+//     of a 3x3x3 grid optionally a void.
 // Shrinking removes boxes, shrinks the grid and the unit towards 1, and the kind towards a
 // plain voxel solid.
 #pragma once
