@@ -105,6 +105,21 @@ def test_nested_shells_as_a_poly_reads_them():
     assert set(np.unique(m["tet_regions"])) == {1, 2}
 
 
+def test_facet_walls_and_a_regional_volume_bound():
+    # data/walls.poly: three cubes split by two walls, each a region; the first one's
+    # region record bounds its tets' volume by 0.002.
+    d = pdr.read(DATA_DIR / "walls.poly")
+    m = pdr.mesh(d, max_volume=0.01)
+    assert m["status"] == "ok"
+    vols = signed_volumes(m["points"], m["tets"])
+    assert vols.sum() == pytest.approx(3, abs=1e-12)
+    labels = m["tet_regions"]
+    assert set(np.unique(labels)) == {1, 3, 4}
+    assert vols[labels == 1].max() <= 0.002 * (1 + 1e-12)
+    assert vols[labels == 4].max() > 0.002
+    assert pdr.check(m["points"], m["tets"], m["faces"], domain=d)["ok"]
+
+
 def test_facets_with_several_polygons_and_a_facet_hole():
     # The unit cube with a square well 0.4 wide and 0.5 deep in its top: the top facet is
     # the outer square and the well's rim, with a facet hole point inside the rim; the
