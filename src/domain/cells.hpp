@@ -106,8 +106,6 @@ class Cells {
   // of times: the cell is enclosed by an odd number of closed surfaces (meaningful when
   // the boundary is closed mod 2).
   bool seed_parity(int c) const { return seed_total_[outer_[c]] % 2 == 1; }
-  // The outer boundaries of other cells enclosing cell c's: 0 for a cell in no other.
-  int depth(int c) const { return depth_[outer_[c]]; }
   // The cell holding p (off every facet): -1 for the unbounded one. `total` gets the ray's
   // crossings with every triangle.
   int locate(const RatPoint& p, int* total = nullptr) const;

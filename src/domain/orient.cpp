@@ -4,10 +4,8 @@
 //
 // The facets cut space into cells (domain/cells.hpp). Which cells form Ω depends on
 // plc.enclosure: by parity, the points from which a ray crosses the boundary an odd number
-// of times when the boundary is closed mod 2, and otherwise (facet walls) the cells at odd
-// nesting depth, the same alternation of solid and void from the outside in; by hole
-// points (TetGen's reading of a .poly), every bounded cell in which no volume hole point
-// lies. Before the cells, the
+// of times (the boundary is then closed mod 2); by hole points (TetGen's reading of a
+// .poly), every bounded cell in which no volume hole point lies. Before the cells, the
 // facet sides around each segment are sorted by angle about a->b (exact: orient3d against
 // a reference side, then pairwise).
 #include <algorithm>
@@ -79,15 +77,6 @@ void number_shells(PlcDomain& dom) {
   }
 }
 
-// Read by parity, whether bounded cell c is in Ω: enclosed by an odd number of closed
-// surfaces when the boundary is closed mod 2; with walls, nested at odd depth (in no other
-// cell's outer boundary: depth 0).
-bool cell_in_parity_domain(const PlcDomain& dom, const Cells& cells, int c) {
-  const bool closed = std::all_of(dom.segments.begin(), dom.segments.end(),
-                                  [](const DomainSegment& s) { return s.sides.size() % 2 == 0; });
-  return closed ? cells.seed_parity(c) : cells.depth(c) % 2 == 0;
-}
-
 // Volume hole points: each lies off the facets and in a bounded cell, and (by parity) in
 // a void. Counts them per cell.
 void locate_holes(PlcDomain& dom, const Cells& cells) {
@@ -97,13 +86,14 @@ void locate_holes(PlcDomain& dom, const Cells& cells) {
     const std::size_t line = i < plc.hole_lines.size() ? plc.hole_lines[i] : 0;
     const std::string which = "volume hole point " + std::to_string(i + 1);
     check_hole_off_facets(dom, cells.rays(), i);
-    const int cell = cells.locate(make_rat(plc.holes[i]));
+    int total = 0;
+    const int cell = cells.locate(make_rat(plc.holes[i]), &total);
     if (cell < 0)
       fail(plc, line,
            "volume hole in a void: " + which +
                " lies outside the domain's closed boundary; a volume hole point must mark "
                "a void enclosed by the boundary. Move it into the void or remove it");
-    if (plc.enclosure == Enclosure::Parity && cell_in_parity_domain(dom, cells, cell))
+    if (plc.enclosure == Enclosure::Parity && total % 2 == 1)
       fail(plc, line,
            "volume hole in a void: " + which +
                " lies inside the domain (it is enclosed by an odd number of closed boundary "
@@ -119,9 +109,8 @@ void mark_inside(PlcDomain& dom, const Cells& cells) {
   dom.cells = cells.count();
   dom.cell_inside.assign(dom.cells, 0);
   for (std::size_t c = 0; c < dom.cells; ++c)
-    dom.cell_inside[c] = dom.plc.enclosure == Enclosure::Parity
-                             ? cell_in_parity_domain(dom, cells, static_cast<int>(c))
-                             : dom.cell_holes[c] == 0;
+    dom.cell_inside[c] = dom.plc.enclosure == Enclosure::Parity ? cells.seed_parity(static_cast<int>(c))
+                                                                : dom.cell_holes[c] == 0;
   const auto inside = [&](int c) { return c >= 0 && dom.cell_inside[static_cast<std::size_t>(c)] != 0; };
   for (std::uint32_t f = 0; f < dom.facets.size(); ++f) {
     DomainFacet& F = dom.facets[f];

@@ -31,9 +31,7 @@ struct PlcRegion {
 // Which cells of the boundary's complement are in the domain.
 enum class Enclosure : std::uint8_t {
   Parity,      // those enclosed by an odd number of closed shells: a shell inside another
-               // bounds a void (surface formats: a hollow part's inner surface); with
-               // facet walls (an odd number of sides around a segment), the cells nested
-               // at odd depth (domain/cells.hpp)
+               // bounds a void (surface formats: a hollow part's inner surface)
   HolePoints,  // every bounded cell unless a volume hole point lies in it: a shell inside
                // another bounds a second region (TetGen's reading of a .poly or .smesh)
 };
