@@ -250,6 +250,16 @@ class Checker {
   void dihedrals(std::uint32_t s) {
     const DomainSegment& S = dom_.segments[s];
     const std::size_t k = S.sides.size();
+    if (k == 1 && S.sides[0].inside_after > 0) {
+      // A free edge of a facet inside Ω (a baffle, a wall's window): the domain turns all
+      // the way round it, 360 degrees.
+      AngleRecord r;
+      r.kind = AngleKind::FacetFacet;
+      r.degrees = 360;
+      r.segments = {ends(s)};
+      r.facets = {S.sides[0].facet, S.sides[0].facet};
+      record(std::move(r), true);
+    }
     if (k < 2) return;
     const Point &p = pts_[S.a], &q = pts_[S.b];
     const Vec u = sub(q, p);

@@ -182,7 +182,7 @@ void check_closed(const PlcDomain& dom) {
   const bool walls = plc.enclosure == Enclosure::HolePoints;
   for (const DomainSegment& s : dom.segments) {
     const std::size_t k = s.sides.size();
-    if (k % 2 == 0 || (walls && k > 1)) continue;
+    if (k % 2 == 0 || walls) continue;
     const std::string seg = "the segment from " + vertex_name(plc, s.a) + " to " +
                             vertex_name(plc, s.b);
     const std::size_t line = plc.facets[s.sides[0].facet].line;

@@ -101,7 +101,7 @@ void Cells::join_sides() {
           joins.join(side_node(offset_[f] + t, side), side_node(offset_[f] + static_cast<std::size_t>(x.nbr[e]), side));
       }
   for (const DomainSegment& s : dom_.segments)
-    for (std::size_t i = 0; i < s.sides.size() && s.sides.size() >= 2; ++i) {
+    for (std::size_t i = 0; i < s.sides.size(); ++i) {  // one side: its front joins its back
       const HalfFacet &x = s.sides[i], &y = s.sides[(i + 1) % s.sides.size()];
       joins.join(side_node(offset_[x.facet] + x.tri, x.dir), side_node(offset_[y.facet] + y.tri, -y.dir));
     }

@@ -10,7 +10,8 @@
 //      are joined within a facet (its triangles are oriented alike) and across each wedge
 //      between consecutive facets around a segment: the wedge from side x to the next side
 //      y (positive rotation about a->b) is bounded by x's side facing the rotation (front
-//      iff x runs a->b) and y's side facing back. A connected set of sides ("component")
+//      iff x runs a->b) and y's side facing back (a free edge, with one side, joins the
+//      facet's two sides). A connected set of sides ("component")
 //      lies in the closure of one cell. Its one-sided triangles (those whose other side
 //      is another component) form a surface closed mod 2: each wedge adds two sides of a
 //      segment, and a triangle with both sides in it cancels. (Within a facet, sides are

@@ -15,7 +15,8 @@
 //   - components meet only in shared vertices and segments (no crossing facets, segments
 //     or stray vertices);
 //   - every segment bounds at least two facet sides (a segment inside a face counts as
-//     two). The facets cut space into cells (domain/orient.cpp); the domain is, by
+//     two), except, read as TetGen reads a .poly, a free edge of a facet inside the domain
+//     (a crack, a baffle, a window in a wall: one side, the domain all round it). The facets cut space into cells (domain/orient.cpp); the domain is, by
 //     plc.enclosure: the points from which a ray crosses the boundary an odd number of
 //     times (every segment then bounds an even number of sides, so the boundary is closed
 //     mod 2; voids are even); or, TetGen's reading, every bounded cell in which no volume

@@ -117,7 +117,19 @@ void mark_inside(PlcDomain& dom, const Cells& cells) {
     if (F.tris.empty()) continue;
     F.cells = {cells.cell_of_side(f, 0, +1), cells.cell_of_side(f, 0, -1)};
     const bool front = inside(F.cells[0]), back = inside(F.cells[1]);
-    if (!front && !back)
+    if (!front && !back) {
+      // An open boundary (a facet missing) leaves every facet with no domain on either
+      // side: say where it is open.
+      for (const std::uint32_t sg : F.segments)
+        if (dom.segments[sg].sides.size() == 1)
+          fail(dom.plc, dom.plc.facets[f].line,
+               "closed boundary: the segment from " + vertex_name(dom.plc, dom.segments[sg].a) +
+                   " to " + vertex_name(dom.plc, dom.segments[sg].b) +
+                   " bounds only one facet side (this facet) and no side of it is in the "
+                   "domain; every segment must be shared by two or more facet sides, except "
+                   "the free edges of a facet inside the domain. Add the missing facet; if a "
+                   "vertex of a neighbouring facet should split this edge, it must lie "
+                   "exactly on it");
       fail(dom.plc, dom.plc.facets[f].line,
            "volume holes: " +
                (F.part_of >= 0 ? "a part of " + facet_name(dom.plc, static_cast<std::size_t>(F.part_of))
@@ -125,6 +137,7 @@ void mark_inside(PlcDomain& dom, const Cells& cells) {
                " has no domain on either side (volume hole points mark the regions on both "
                "sides of it, or it lies in a void); remove that surface or the hole point "
                "that empties the region it bounds");
+    }
     F.separates = front != back;
     for (FacetTri& t : F.tris) t.inward = static_cast<std::int8_t>(front ? 1 : -1);
   }

@@ -480,6 +480,113 @@ TEST_F(Cli, MeshSplitsRegionsAtFacetWalls) {
   EXPECT_NE(h.out.find("has no domain on either side"), std::string::npos) << h.out;
 }
 
+// Facets with free edges inside the domain, as TetGen meshes them: a crack (a square
+// floating in a box, every edge free) and a wall with a window (a facet hole whose rim is
+// free). Each free edge bounds one facet side, the domain turns 360 degrees around it; the
+// facet is internal (tets on both sides), the mesh conforms to it, the volume is exact. A
+// .poly whose boundary is open (a facet missing) is still refused, naming the open edge.
+TEST_F(Cli, MeshKeepsFacetsWithFreeEdgesInsideTheDomain) {
+  write("crack.poly",
+      "# box [0,2]^3 with a floating square facet (a crack) at z = 1\n"
+      "12 3 0 0\n"
+      "1 0 0 0\n"
+      "2 2 0 0\n"
+      "3 2 2 0\n"
+      "4 0 2 0\n"
+      "5 0 0 2\n"
+      "6 2 0 2\n"
+      "7 2 2 2\n"
+      "8 0 2 2\n"
+      "9 0.5 0.5 1\n"
+      "10 1.5 0.5 1\n"
+      "11 1.5 1.5 1\n"
+      "12 0.5 1.5 1\n"
+      "7 1\n"
+      "1 0 1\n"
+      "4 1 2 3 4\n"
+      "1 0 1\n"
+      "4 5 6 7 8\n"
+      "1 0 1\n"
+      "4 1 2 6 5\n"
+      "1 0 1\n"
+      "4 2 3 7 6\n"
+      "1 0 1\n"
+      "4 3 4 8 7\n"
+      "1 0 1\n"
+      "4 4 1 5 8\n"
+      "1 0 2\n"
+      "4 9 10 11 12\n"
+      "0\n"
+      "0\n");
+  write("window.poly",
+      "# box [0,2]x[0,1]^2 with wall x=1 that has a square facet hole: one region, expected volume 2\n"
+      "# (the hole rim bounds one facet side)\n"
+      "16 3 0 0\n"
+      "1 0 0 0\n"
+      "2 1 0 0\n"
+      "3 2 0 0\n"
+      "4 0 1 0\n"
+      "5 1 1 0\n"
+      "6 2 1 0\n"
+      "7 0 0 1\n"
+      "8 1 0 1\n"
+      "9 2 0 1\n"
+      "10 0 1 1\n"
+      "11 1 1 1\n"
+      "12 2 1 1\n"
+      "13 1 0.25 0.25\n"
+      "14 1 0.75 0.25\n"
+      "15 1 0.75 0.75\n"
+      "16 1 0.25 0.75\n"
+      "11 1\n"
+      "1 0 1\n"
+      "4 1 4 10 7\n"
+      "1 0 1\n"
+      "4 3 6 12 9\n"
+      "1 0 1\n"
+      "4 1 2 5 4\n"
+      "1 0 1\n"
+      "4 2 3 6 5\n"
+      "1 0 1\n"
+      "4 7 8 11 10\n"
+      "1 0 1\n"
+      "4 8 9 12 11\n"
+      "1 0 1\n"
+      "4 1 2 8 7\n"
+      "1 0 1\n"
+      "4 2 3 9 8\n"
+      "1 0 1\n"
+      "4 4 5 11 10\n"
+      "1 0 1\n"
+      "4 5 6 12 11\n"
+      "2 1 2\n"
+      "4 2 5 11 8\n"
+      "4 13 14 15 16\n"
+      "1 1 0.5 0.5\n"
+      "0\n"
+      "0\n");
+  for (const auto& [name, volume] : {std::pair{"crack", 8.0}, std::pair{"window", 2.0}}) {
+    const Outcome r = run("mesh " + path(std::string(name) + ".poly") + " -o " + path(name) +
+                          " --max-volume 0.01");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("check: pass"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("admissible: false"), std::string::npos) << r.out;  // 360 degrees
+    EXPECT_NEAR(mesh_volume(path(name)), volume, 1e-12);
+  }
+  std::ifstream in(data("box.poly"));
+  std::string open((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t count = open.find("\n6 1\n"), last = open.find("1 0 1\n4 4 1 5 8\n");
+  ASSERT_NE(count, std::string::npos);
+  ASSERT_NE(last, std::string::npos);
+  open.replace(last, std::string("1 0 1\n4 4 1 5 8\n").size(), "");
+  open.replace(count, 5, "\n5 1\n");
+  write("open.poly", open);
+  const Outcome o = run("mesh " + path("open.poly") + " -o " + path("o"));
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("closed boundary: the segment from"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("bounds only one facet side"), std::string::npos) << o.out;
+}
+
 // Each malformed domain exits 2, names bad.poly and the line, and leaves nothing behind
 // (not even the output folder).
 TEST_F(Cli, MeshMalformedDomainsExit2WithFileAndLineAndWriteNothing) {
