@@ -48,6 +48,7 @@
 
 #include "check/checks.hpp"
 #include "check/signs.hpp"
+#include "mesh/union_find.hpp"
 
 namespace pdr::check {
 namespace {
@@ -171,16 +172,6 @@ bool improper(const Tri& f, const Tri& g, std::span<const Point> pts) {
   }
   return false;
 }
-
-struct UnionFind {
-  std::vector<std::uint32_t> up;
-  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (up[x] != x) x = up[x] = up[up[x]];
-    return x;
-  }
-  void join(std::uint32_t x, std::uint32_t y) { up[find(x)] = find(y); }
-};
 
 // The symbolic point just outside outward face (a, b, d) (see the header), against the
 // plane of the outward face (u, v, w): the sign of orient3d(u, v, w, x), never Zero.

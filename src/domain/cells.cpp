@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "geom/predicates.hpp"
+#include "mesh/union_find.hpp"
 
 namespace pdr::domain {
 
@@ -49,6 +50,7 @@ bool ray_crosses(const RatPoint& o, int axis, int dir, const Point& a, const Poi
 
 // Side node of triangle g: 2g its front, 2g + 1 its back.
 std::size_t side_node(std::size_t g, int side) { return 2 * g + (side > 0 ? 0 : 1); }
+std::uint32_t side(std::size_t g, int s) { return static_cast<std::uint32_t>(side_node(g, s)); }
 
 }  // namespace
 
@@ -89,7 +91,7 @@ int Cells::locate(const RatPoint& p, int* total) const {
 
 void Cells::join_sides() {
   const std::size_t n = offset_.back();
-  Joins joins(2 * n);
+  UnionFind joins(2 * n);
   for (std::size_t f = 0; f < dom_.facets.size(); ++f)
     for (std::size_t t = 0; t < dom_.facets[f].tris.size(); ++t)
       for (int e = 0; e < 3; ++e) {
@@ -97,18 +99,18 @@ void Cells::join_sides() {
         // may stand on it).
         const FacetTri& x = dom_.facets[f].tris[t];
         if (x.nbr[e] < 0 || x.on_segment[e]) continue;
-        for (int side : {+1, -1})
-          joins.join(side_node(offset_[f] + t, side), side_node(offset_[f] + static_cast<std::size_t>(x.nbr[e]), side));
+        for (int s : {+1, -1})
+          joins.join(side(offset_[f] + t, s), side(offset_[f] + static_cast<std::size_t>(x.nbr[e]), s));
       }
   for (const DomainSegment& s : dom_.segments)
     for (std::size_t i = 0; i < s.sides.size(); ++i) {  // one side: its front joins its back
       const HalfFacet &x = s.sides[i], &y = s.sides[(i + 1) % s.sides.size()];
-      joins.join(side_node(offset_[x.facet] + x.tri, x.dir), side_node(offset_[y.facet] + y.tri, -y.dir));
+      joins.join(side(offset_[x.facet] + x.tri, x.dir), side(offset_[y.facet] + y.tri, -y.dir));
     }
   comp_.assign(2 * n, -1);
   std::vector<int> id(2 * n, -1);
   for (std::size_t v = 0; v < 2 * n; ++v) {
-    int& c = id[joins.root(v)];
+    int& c = id[joins.find(static_cast<std::uint32_t>(v))];
     if (c < 0) c = static_cast<int>(comps_++);
     comp_[v] = c;
   }

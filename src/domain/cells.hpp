@@ -34,7 +34,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <numeric>
 #include <vector>
 
 #include "domain/bvh.hpp"
@@ -42,20 +41,6 @@
 #include "domain/exact.hpp"
 
 namespace pdr::domain {
-
-// Union-find with path halving (sides of triangles here; facets in domain/orient.cpp).
-class Joins {
- public:
-  explicit Joins(std::size_t n) : up_(n) { std::iota(up_.begin(), up_.end(), std::size_t{0}); }
-  std::size_t root(std::size_t x) {
-    while (up_[x] != x) x = up_[x] = up_[up_[x]];
-    return x;
-  }
-  void join(std::size_t a, std::size_t b) { up_[root(a)] = root(b); }
-
- private:
-  std::vector<std::size_t> up_;
-};
 
 struct TriRef {
   std::uint32_t facet, tri;

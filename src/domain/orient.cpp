@@ -17,6 +17,7 @@
 #include "domain/intersect.hpp"
 #include "domain/steps.hpp"
 #include "geom/predicates.hpp"
+#include "mesh/union_find.hpp"
 
 namespace pdr::domain::detail {
 
@@ -64,14 +65,14 @@ void check_hole_off_facets(const PlcDomain& dom, const RayCaster& rays, std::siz
 // Shells: the connected components of the boundary surface (triangles joined within their
 // facet and at segments), a figure of the domain report.
 void number_shells(PlcDomain& dom) {
-  Joins joins(dom.facets.size());
+  UnionFind joins(dom.facets.size());
   for (const DomainSegment& s : dom.segments)
     for (const HalfFacet& h : s.sides) joins.join(h.facet, s.sides[0].facet);
   std::vector<int> id(dom.facets.size(), -1);
   dom.shells = 0;
   for (std::size_t f = 0; f < dom.facets.size(); ++f) {
     if (dom.facets[f].tris.empty()) continue;
-    int& c = id[joins.root(f)];
+    int& c = id[joins.find(static_cast<std::uint32_t>(f))];
     if (c < 0) c = static_cast<int>(dom.shells++);
     dom.facets[f].shell = c;
   }

@@ -11,6 +11,7 @@
 #include "io/error.hpp"
 #include "io/surface.hpp"
 #include "io/surface_topology.hpp"
+#include "mesh/union_find.hpp"
 
 namespace pdr::io {
 
@@ -52,25 +53,6 @@ Sign polygon_sign(const SurfaceTopology& t, std::span<const std::uint32_t> loop,
   return orient_along(t.points[loop[(m + n - 1) % n]], t.points[loop[m]],
                       t.points[loop[(m + 1) % n]], axis);
 }
-
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) {
-    std::iota(parent_.begin(), parent_.end(), 0u);
-  }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the root is the first face
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 // Step 5's merge test for face f and its neighbour g across the edge from corner i of f.
 bool same_facet(const Surface& s, const SurfaceTopology& t, std::size_t f, std::size_t g,
