@@ -11,11 +11,14 @@
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
 #include "app/order_check.hpp"
+#include "app/pipeline.hpp"
 #include "app/progress.hpp"
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "check/explain.hpp"
 #include "check/fields.hpp"
+#include "domain/validate.hpp"
+#include "io/error.hpp"
 #include "io/mesh_io.hpp"
 #include "io/vtu.hpp"
 
@@ -84,6 +87,12 @@ int run_check(const CheckArgs& args) {
     opt.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
   const bool every_finding = args.explain || args.vtu;
   opt.max_reported = every_finding ? std::numeric_limits<std::size_t>::max() : args.max_reported;
+  // The domain as pdr reads it: the pieces that bound no region are not required (TetGen
+  // drops them too). A domain pdr refuses is checked as given.
+  if (domain) try {
+      skip_dropped(domain::build_domain(*domain), opt);
+    } catch (const InputError&) {
+    }
   const auto view = check::view_of(mesh);
   // DT(V) for order.independence is rebuilt meanwhile on another thread.
   auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);

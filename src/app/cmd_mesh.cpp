@@ -201,6 +201,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   // Voids no hole point marks: TetGen would mesh them as regions (README, Formats).
   if (!an.report.unmarked_voids.empty())
     summary.set("unmarked_voids", report.at("unmarked_voids"));
+  // Facets between voids, or a void and the outside: dropped, as TetGen drops them.
+  if (!an.report.dropped_facets.empty())
+    summary.set("dropped_facets", report.at("dropped_facets"));
   timer.lap("analyze");
 
   int code = kExitOk;
@@ -321,6 +324,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
     // Remarks 1-2 (below): DT(V) is rebuilt meanwhile on another thread.
     auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);
+    skip_dropped(an.domain, co);
     const check::Report report = check::check_mesh(check::view_of(mesh), an.domain.plc, co);
     timer.lap("check");
     // quality.ratio failing is what exit 3 already reports; so is encroachment on an

@@ -1,7 +1,6 @@
 // triangulate_write_check (pipeline.hpp).
 #include "app/pipeline.hpp"
 
-#include <algorithm>
 #include <filesystem>
 
 #include "app/exit_codes.hpp"
@@ -84,6 +83,25 @@ int triangulate_write_check(std::vector<Point> points, const std::string& source
   }
   finish_summary(timer, summary);
   return code;
+}
+
+void skip_dropped(const domain::PlcDomain& dom, check::Options& options) {
+  for (const domain::PlcDomain::Dropped& d : dom.dropped)
+    for (const auto& t : d.tris) options.dropped_tris.push_back({d.facet, t});
+  options.dropped_segments.insert(options.dropped_segments.end(), dom.dropped_segments.begin(),
+                                  dom.dropped_segments.end());
+  // Their vertices that no kept triangle or segment holds: a mesher may leave them out.
+  std::vector<std::uint8_t> state(dom.vertex_count(), 0);  // 1: on a dropped piece, 2: kept
+  for (const domain::PlcDomain::Dropped& d : dom.dropped)
+    for (const auto& t : d.tris)
+      for (const std::uint32_t v : t) state[v] = 1;
+  for (const auto& s : dom.dropped_segments) state[s[0]] = state[s[1]] = 1;
+  for (const domain::DomainFacet& f : dom.facets)
+    for (const domain::FacetTri& t : f.tris)
+      for (const std::uint32_t v : t.v) state[v] = 2;
+  for (const domain::DomainSegment& s : dom.segments) state[s.a] = state[s.b] = 2;
+  for (std::uint32_t v = 0; v < state.size(); ++v)
+    if (state[v] == 1) options.dropped_vertices.push_back(v);
 }
 
 void write_outputs(const MeshData& mesh, const std::string& prefix,

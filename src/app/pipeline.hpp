@@ -8,6 +8,7 @@
 
 #include "app/summary.hpp"
 #include "check/check.hpp"
+#include "domain/domain.hpp"
 #include "geom/point.hpp"
 #include "io/mesh_io.hpp"
 
@@ -26,6 +27,10 @@ void write_outputs(const MeshData& mesh, const std::string& prefix,
 // failed ids.
 std::vector<std::string> record_check(const check::Report& report, bool with_report,
                                       Summary& summary);
+
+// The pieces of `dom` its analysis dropped (PlcDomain::dropped): the checker does not
+// require them in the mesh.
+void skip_dropped(const domain::PlcDomain& dom, check::Options& options);
 
 // The summary's closing entries: seconds per phase and the peak memory.
 void finish_summary(const PhaseTimer& timer, Summary& summary);

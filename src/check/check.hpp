@@ -50,6 +50,7 @@
 // element id).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -88,6 +89,17 @@ struct Options {
   // relative_tolerance * (facet diameter) of a facet's plane, or within
   // relative_tolerance * |AB| of a segment AB's line, counts as lying on it.
   double relative_tolerance = 1e-10;
+  // Pieces of the domain that bound no region (a facet, or a part of one, with voids or the
+  // outside on both sides, and the segments only such pieces hold): TetGen drops them, and
+  // so does pdr's domain analysis (domain::PlcDomain::dropped). The mesh need not hold
+  // them. Input vertex ids; `facet` indexes the domain's facets.
+  struct DroppedTri {
+    std::uint32_t facet = 0;
+    std::array<std::uint32_t, 3> v{};
+  };
+  std::vector<DroppedTri> dropped_tris;
+  std::vector<std::array<std::uint32_t, 2>> dropped_segments;
+  std::vector<std::uint32_t> dropped_vertices;  // on dropped pieces only: may be left out
   bool check_overlap = true;          // validity.overlap (the costliest validity check)
   // validity.overlap first tries the degree argument (degree.cpp), which looks at the
   // boundary surface only; off, every pair of tets with meeting boxes is tested.

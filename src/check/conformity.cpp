@@ -61,6 +61,7 @@ const char* skip_name(ItemStatus s) {
     case ItemStatus::Degenerate: return "skipped_degenerate";
     case ItemStatus::NonPlanar: return "skipped_nonplanar";
     case ItemStatus::Unsupported: return "skipped_crossing_polygons";
+    case ItemStatus::Dropped: return "dropped";
     case ItemStatus::Ok: break;
   }
   return "ok";
@@ -71,9 +72,12 @@ const char* skip_name(ItemStatus s) {
 CheckResult check_input_vertices(const Context& c) {
   CheckResult r = make_result("conformity.vertices");
   const DomainMap& m = *c.domain_map;
+  std::vector<std::uint8_t> may_miss(m.mesh_vertex.size(), 0);
+  for (const std::uint32_t v : c.options.dropped_vertices)
+    if (v < may_miss.size()) may_miss[v] = 1;
   for (std::size_t i = 0; i < m.mesh_vertex.size(); ++i) {
     ++r.checked;
-    if (m.mesh_vertex[i]) continue;
+    if (m.mesh_vertex[i] || may_miss[i]) continue;
     ++r.violations;
     if (r.findings.size() < c.options.max_reported)
       r.findings.push_back({"input_vertex", i, {}, {c.domain->points[i]}, std::nullopt,
@@ -90,6 +94,7 @@ CheckResult check_segments(const Context& c) {
   std::uint64_t skipped = 0;
   for (std::size_t i = 0; i < m.segments.size(); ++i) {
     const SegmentMap& s = m.segments[i];
+    if (s.status == ItemStatus::Dropped) continue;
     if (s.status != ItemStatus::Ok) {
       ++r.counts[skip_name(s.status)];
       ++skipped;
@@ -97,10 +102,11 @@ CheckResult check_segments(const Context& c) {
     }
     ++r.checked;
     r.counts["tolerance_vertices"] += s.tolerance_vertices;
-    r.counts["subsegments"] += s.vertices.size() - 1;
+    r.counts["subsegments"] += s.vertices.size() - 1 - static_cast<std::size_t>(std::count(
+        s.dropped.begin(), s.dropped.end(), std::uint8_t{1}));
     for (std::size_t k = 0; k + 1 < s.vertices.size(); ++k) {
       const std::uint32_t u = s.vertices[k], v = s.vertices[k + 1];
-      if (c.topology.has_edge(u, v)) continue;
+      if (c.topology.has_edge(u, v) || (!s.dropped.empty() && s.dropped[k])) continue;
       ++r.violations;
       if (r.findings.size() < c.options.max_reported)
         r.findings.push_back(make_finding(
@@ -137,7 +143,8 @@ CheckResult check_facets(const Context& c) {
       covered += abs(area2(project(c.mesh.points[t[0]], f.drop), project(c.mesh.points[t[1]], f.drop),
                            project(c.mesh.points[t[2]], f.drop)));
     }
-    const mpq_class& area = f.region->area2();
+    mpq_class area = f.region->area2();
+    for (const std::vector<P2>& tri : f.dropped) area -= abs(area2(tri));
     if (covered == area) continue;
     ++r.violations;
     if (r.findings.size() < c.options.max_reported) {

@@ -97,19 +97,22 @@ SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const DomainMap& m, con
 
 using SegmentIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t>;
 
-FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const SegmentIndex& seg_index,
-                   const MeshView& mesh, const PointGrid& grid, double tol) {
+FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const DomainMap& m,
+                   const SegmentIndex& seg_index, const MeshView& mesh, const PointGrid& grid,
+                   double tol, const std::vector<std::uint8_t>& dropped_vertex) {
   FacetMap fm;
-  std::vector<std::uint32_t> ids;  // mesh ids of the facet's vertices
+  // The facet's vertices: equal to their mesh vertices, which a mesher may leave out where
+  // they lie only on dropped pieces (Options::dropped_vertices).
+  std::vector<Point> pts;
   bool has_polygon = false;
   for (const auto& poly : f.polygons) {
     has_polygon = has_polygon || poly.size() >= 3;
     for (std::uint32_t v : poly) {
-      if (v >= m.mesh_vertex.size() || !m.mesh_vertex[v]) {
+      if (v >= m.mesh_vertex.size() || (!m.mesh_vertex[v] && !dropped_vertex[v])) {
         fm.status = ItemStatus::MissingVertex;
         return fm;
       }
-      ids.push_back(*m.mesh_vertex[v]);
+      pts.push_back(input[v]);
     }
   }
   if (!has_polygon) {
@@ -117,20 +120,18 @@ FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const SegmentIndex& se
     return fm;
   }
   // Spanning triple: a, the farthest b, the c maximizing |(b-a) x (c-a)|.
-  const Point& a = mesh.points[ids[0]];
-  std::uint32_t bi = ids[0], ci = ids[0];
+  const Point& a = pts[0];
+  Point b = a, c = a;
   double best = -1;
-  for (std::uint32_t v : ids) {
-    const double d = norm(sub(mesh.points[v], a));
-    if (d > best) best = d, bi = v;
+  for (const Point& v : pts) {
+    const double d = norm(sub(v, a));
+    if (d > best) best = d, b = v;
   }
-  const Point& b = mesh.points[bi];
   best = -1;
-  for (std::uint32_t v : ids) {
-    const double d = norm(cross(sub(b, a), sub(mesh.points[v], a)));
-    if (d > best) best = d, ci = v;
+  for (const Point& v : pts) {
+    const double d = norm(cross(sub(b, a), sub(v, a)));
+    if (d > best) best = d, c = v;
   }
-  const Point& c = mesh.points[ci];
   const Vec n = cross(sub(b, a), sub(c, a));
   int drop = -1;
   for (int k = 0; k < 3; ++k)
@@ -142,11 +143,7 @@ FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const SegmentIndex& se
     return fm;
   }
   fm.drop = drop;
-  const Box fbox = bounding_box([&] {
-    std::vector<Point> pts;
-    for (std::uint32_t v : ids) pts.push_back(mesh.points[v]);
-    return pts;
-  }());
+  const Box fbox = bounding_box(pts);
   const double diam = norm(sub(fbox.hi, fbox.lo));
   const double dist = tol * diam, nn = norm(n);
   auto on_plane = [&](const Point& p, bool& tolerance) {
@@ -156,9 +153,9 @@ FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const SegmentIndex& se
     tolerance = std::fabs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) <= dist * nn;
     return tolerance;
   };
-  for (std::uint32_t v : ids) {
+  for (const Point& v : pts) {
     bool tolerance = false;
-    if (!on_plane(mesh.points[v], tolerance)) {
+    if (!on_plane(v, tolerance)) {
       fm.status = ItemStatus::NonPlanar;
       return fm;
     }
@@ -172,7 +169,7 @@ FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const SegmentIndex& se
     std::vector<P2> q;
     for (std::size_t i = 0; i < poly.size(); ++i) {
       const std::uint32_t u = poly[i], v = poly[(i + 1) % poly.size()];
-      q.push_back(project(mesh.points[*m.mesh_vertex[u]], drop));
+      q.push_back(project(input[u], drop));
       const auto it = seg_index.find({std::min(u, v), std::max(u, v)});
       if (u == v || it == seg_index.end()) continue;
       const SegmentMap& s = m.segments[it->second];
@@ -199,6 +196,70 @@ FacetMap map_facet(const PlcFacet& f, const DomainMap& m, const SegmentIndex& se
   });
   std::sort(fm.on_plane.begin(), fm.on_plane.end());
   return fm;
+}
+
+// The pieces the domain analysis dropped (Options::dropped_*): the pairs of consecutive
+// mesh vertices of a segment between the ends of a dropped segment, and each facet's
+// dropped triangles, projected, through the mesh vertices on their edges where those lie
+// on a segment (as the region polygons are built: the areas then still compare exactly).
+void mark_dropped(DomainMap& m, const std::vector<Point>& input, const MeshView& mesh,
+                  const Options& options) {
+  if (options.dropped_segments.empty() && options.dropped_tris.empty()) return;
+  // Where each input vertex's mesh vertex lies on the segment chains: (segment, position).
+  std::vector<std::int64_t> input_of(mesh.points.size(), -1);
+  for (std::size_t v = 0; v < m.mesh_vertex.size(); ++v)
+    if (m.mesh_vertex[v]) input_of[*m.mesh_vertex[v]] = static_cast<std::int64_t>(v);
+  std::multimap<std::uint32_t, std::pair<std::size_t, std::size_t>> on_chain;
+  for (std::size_t i = 0; i < m.segments.size(); ++i) {
+    const SegmentMap& s = m.segments[i];
+    if (s.status != ItemStatus::Ok) continue;
+    for (std::size_t k = 0; k < s.vertices.size(); ++k)
+      if (input_of[s.vertices[k]] >= 0) on_chain.emplace(static_cast<std::uint32_t>(input_of[s.vertices[k]]), std::pair{i, k});
+  }
+  // The segments whose chains hold input vertices u and v: (segment, position of u, of v).
+  const auto chains = [&](std::uint32_t u, std::uint32_t v) {
+    std::vector<std::array<std::size_t, 3>> out;
+    const auto [ub, ue] = on_chain.equal_range(u);
+    const auto [vb, ve] = on_chain.equal_range(v);
+    for (auto x = ub; x != ue; ++x)
+      for (auto y = vb; y != ve; ++y)
+        if (x->second.first == y->second.first)
+          out.push_back({x->second.first, x->second.second, y->second.second});
+    return out;
+  };
+  for (const auto& d : options.dropped_segments) {
+    if (d[0] >= m.mesh_vertex.size() || d[1] >= m.mesh_vertex.size()) continue;
+    if (!m.mesh_vertex[d[0]] || !m.mesh_vertex[d[1]]) {
+      for (SegmentMap& s : m.segments)
+        if (std::minmax(s.a, s.b) == std::minmax(d[0], d[1])) s.status = ItemStatus::Dropped;
+      continue;
+    }
+    for (const auto& [i, pu, pv] : chains(d[0], d[1])) {
+      SegmentMap& s = m.segments[i];
+      s.dropped.resize(s.vertices.size() - 1, 0);
+      for (auto k = std::min(pu, pv); k < std::max(pu, pv); ++k) s.dropped[k] = 1;
+    }
+  }
+  for (const Options::DroppedTri& t : options.dropped_tris) {
+    if (t.facet >= m.facets.size() || m.facets[t.facet].status != ItemStatus::Ok) continue;
+    if (std::any_of(t.v.begin(), t.v.end(), [&](std::uint32_t v) { return v >= input.size(); }))
+      continue;
+    FacetMap& f = m.facets[t.facet];
+    std::vector<P2> q;
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t u = t.v[e], v = t.v[(e + 1) % 3];
+      q.push_back(project(input[u], f.drop));
+      const auto on = chains(u, v);
+      if (on.empty()) continue;
+      const auto& [i, pu, pv] = on.front();
+      const std::vector<std::uint32_t>& chain = m.segments[i].vertices;
+      if (pu < pv)
+        for (std::size_t k = pu + 1; k < pv; ++k) q.push_back(project(mesh.points[chain[k]], f.drop));
+      else
+        for (std::size_t k = pu - 1; k > pv; --k) q.push_back(project(mesh.points[chain[k]], f.drop));
+    }
+    f.dropped.push_back(std::move(q));
+  }
 }
 
 // Mesh faces in each facet: all three vertices on the facet's plane, centroid in its region.
@@ -230,6 +291,10 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
       const Where w = f.region->locate(q);
       if (w == Where::Boundary) ++f.ambiguous_faces;
       if (w != Where::Inside) continue;
+      if (std::any_of(f.dropped.begin(), f.dropped.end(), [&](const std::vector<P2>& tri) {
+            return locate_in_polygon(tri, q) != Where::Outside;
+          }))
+        continue;
       f.faces.push_back(static_cast<std::uint32_t>(fid));
       if (!m.face_in_facet[fid]) m.subfacets.push_back(static_cast<std::uint32_t>(fid));
       m.face_in_facet[fid] = 1;
@@ -272,8 +337,12 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
         m.segments.push_back(map_segment(u, v, m, mesh, grid, tol));
       }
     }
+  std::vector<std::uint8_t> dropped_vertex(domain.points.size(), 0);
+  for (const std::uint32_t v : options.dropped_vertices)
+    if (v < dropped_vertex.size()) dropped_vertex[v] = 1;
   for (const PlcFacet& f : domain.facets)
-    m.facets.push_back(map_facet(f, m, seg_index, mesh, grid, tol));
+    m.facets.push_back(map_facet(f, domain.points, m, seg_index, mesh, grid, tol, dropped_vertex));
+  mark_dropped(m, domain.points, mesh, options);
   assign_faces(m, mesh, topo);
   return m;
 }

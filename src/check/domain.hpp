@@ -33,12 +33,15 @@
 
 namespace pdr::check {
 
-enum class ItemStatus : std::uint8_t { Ok, MissingVertex, Degenerate, NonPlanar, Unsupported };
+// Dropped: a segment the domain analysis dropped whose ends the mesher left out.
+enum class ItemStatus : std::uint8_t { Ok, MissingVertex, Degenerate, NonPlanar, Unsupported, Dropped };
 
 struct SegmentMap {
   std::uint32_t a = 0, b = 0;              // input vertex ids
   ItemStatus status = ItemStatus::Ok;
   std::vector<std::uint32_t> vertices;     // mesh vertices on it, from a to b
+  std::vector<std::uint8_t> dropped;       // per pair of consecutive vertices: a dropped
+                                           // piece (Options::dropped_segments); empty: none
   std::uint64_t tolerance_vertices = 0;    // of those, not exactly collinear
 };
 
@@ -48,6 +51,9 @@ struct FacetMap {
   int drop = 2;                            // coordinate dropped by the projection
   std::vector<std::uint32_t> on_plane;     // mesh vertices on its plane (sorted)
   std::vector<std::uint32_t> faces;        // topology face ids lying in the facet
+  std::vector<std::vector<P2>> dropped;    // its dropped triangles (Options::dropped_tris),
+                                           // projected through the mesh vertices on their
+                                           // segment edges: faces there are not in the facet
   std::uint64_t tolerance_vertices = 0;    // on_plane vertices not exactly coplanar
   std::uint64_t ambiguous_faces = 0;       // on-plane faces with a centroid on an edge
 };

@@ -38,6 +38,7 @@ CheckResult check_subsegments_unencroached(const Context& c) {
     const SegmentMap& s = m.segments[i];
     if (s.status != ItemStatus::Ok) continue;
     for (std::size_t k = 0; k + 1 < s.vertices.size(); ++k) {
+      if (!s.dropped.empty() && s.dropped[k]) continue;
       const std::uint32_t a = s.vertices[k], b = s.vertices[k + 1];
       ++r.checked;
       const Box box = enclosing_box(diametral_ball(pts[a], pts[b]));

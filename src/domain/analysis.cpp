@@ -72,6 +72,12 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
       ++r.voids;
       if (dom.cell_holes[c] == 0) r.unmarked_voids.emplace_back(f, plc.facets[f].line);
     }
+  for (const PlcDomain::Dropped& d : dom.dropped)
+    if (r.dropped_facets.empty() || r.dropped_facets.back().first != d.facet)
+      r.dropped_facets.emplace_back(d.facet, plc.facets[d.facet].line);
+  std::sort(r.dropped_facets.begin(), r.dropped_facets.end());
+  r.dropped_facets.erase(std::unique(r.dropped_facets.begin(), r.dropped_facets.end()),
+                         r.dropped_facets.end());
   r.volume_holes = plc.holes.size();
   for (const PlcFacet& f : plc.facets) r.facet_holes += f.holes.size();
   r.regions = plc.regions.size();
@@ -107,6 +113,10 @@ std::string render_text(const DomainReport& r) {
   for (const auto& [f, line] : r.unmarked_voids)
     o << "    the void bounded by facet " << f << at_line(line)
       << " holds no volume hole point (TetGen would mesh it as a region)\n";
+  for (const auto& [f, line] : r.dropped_facets)
+    o << "    facet " << f << at_line(line)
+      << " bounds no region (voids or the outside on both sides) and is dropped, all or in "
+         "part, as TetGen drops it\n";
   o << "  bounding box: [" << num(r.bbox_lo[0]) << ", " << num(r.bbox_lo[1]) << ", "
     << num(r.bbox_lo[2]) << "] .. [" << num(r.bbox_hi[0]) << ", " << num(r.bbox_hi[1]) << ", "
     << num(r.bbox_hi[2]) << "]\n";
@@ -157,6 +167,9 @@ nlohmann::json to_json(const DomainReport& r) {
   json unmarked = json::array();
   for (const auto& [f, line] : r.unmarked_voids) unmarked.push_back({{"facet", f}, {"line", line}});
   j["unmarked_voids"] = unmarked;
+  json dropped = json::array();
+  for (const auto& [f, line] : r.dropped_facets) dropped.push_back({{"facet", f}, {"line", line}});
+  j["dropped_facets"] = dropped;
   j["bounding_box"] = {{"min", r.bbox_lo}, {"max", r.bbox_hi}};
   json tol = json::array();
   for (const ToleranceFacet& t : r.tolerance_facets)

@@ -41,6 +41,9 @@ struct DomainReport {
   // from a surface file): pdr leaves it empty as every void, where TetGen meshes it as a
   // region of its own.
   std::vector<std::pair<std::uint32_t, std::size_t>> unmarked_voids;
+  // Each input facet (and its line) of which all or a part bounds no region (voids or the
+  // outside on both sides): that part is dropped, as TetGen drops it (PlcDomain::dropped).
+  std::vector<std::pair<std::uint32_t, std::size_t>> dropped_facets;
   std::size_t volume_holes = 0, facet_holes = 0, regions = 0;
   Point bbox_lo{}, bbox_hi{};           // of the boundary vertices
   double planarity_tolerance = 0;

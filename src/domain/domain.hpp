@@ -23,6 +23,9 @@
 //     hole point lies, so that a closed shell inside another, or a facet wall splitting a
 //     region, bounds a second region, and its facets are internal (`separates` false,
 //     both sides in Ω);
+//   - a facet, or a part of one, with no domain on either side (two voids, or a void and
+//     the outside) is dropped (`dropped`), as TetGen drops it, with the segments only it
+//     held (`dropped_segments`); the domain is never empty;
 //   - every triangle knows which of its sides faces the domain (`inward`; both do on an
 //     internal facet, which then reads +1), and the facet sides around each segment are
 //     sorted by angle with the inside wedges marked;
@@ -106,6 +109,16 @@ struct PlcDomain {
   std::vector<std::uint8_t> cell_holes;              // per cell: volume hole points in it
                                                      // (saturating at 255)
   std::vector<std::uint32_t> tolerance_facets;       // faces planar only within tolerance
+  // Facets, or parts of them, with no domain on either side (between voids, or a void and
+  // the outside; domain/orient.cpp): dropped, as TetGen drops them. Their records stay in
+  // `facets` with no triangles, vertices or segments (is_face false), and a segment that
+  // only they held is gone from `segments`. Input vertex ids.
+  struct Dropped {
+    std::uint32_t facet = 0;                           // the input facet (part_of of a part)
+    std::vector<std::array<std::uint32_t, 3>> tris;    // its dropped triangles
+  };
+  std::vector<Dropped> dropped;
+  std::vector<std::array<std::uint32_t, 2>> dropped_segments;
 
   std::optional<std::uint32_t> find_segment(std::uint32_t a, std::uint32_t b) const;
   std::size_t face_count() const;

@@ -106,45 +106,97 @@ void locate_holes(PlcDomain& dom, const Cells& cells) {
 }
 
 // Which cells are in Ω, which facets separate, which triangle sides and wedges face Ω.
-void mark_inside(PlcDomain& dom, const Cells& cells) {
+// Returns the facets (or parts) with no domain on either side.
+std::vector<std::uint32_t> mark_inside(PlcDomain& dom, const Cells& cells) {
   dom.cells = cells.count();
   dom.cell_inside.assign(dom.cells, 0);
   for (std::size_t c = 0; c < dom.cells; ++c)
     dom.cell_inside[c] = dom.plc.enclosure == Enclosure::Parity ? cells.seed_parity(static_cast<int>(c))
                                                                 : dom.cell_holes[c] == 0;
   const auto inside = [&](int c) { return c >= 0 && dom.cell_inside[static_cast<std::size_t>(c)] != 0; };
+  std::vector<std::uint32_t> gone;
   for (std::uint32_t f = 0; f < dom.facets.size(); ++f) {
     DomainFacet& F = dom.facets[f];
     if (F.tris.empty()) continue;
     F.cells = {cells.cell_of_side(f, 0, +1), cells.cell_of_side(f, 0, -1)};
     const bool front = inside(F.cells[0]), back = inside(F.cells[1]);
-    if (!front && !back) {
-      // An open boundary (a facet missing) leaves every facet with no domain on either
-      // side: say where it is open.
-      for (const std::uint32_t sg : F.segments)
-        if (dom.segments[sg].sides.size() == 1)
-          fail(dom.plc, dom.plc.facets[f].line,
-               "closed boundary: the segment from " + vertex_name(dom.plc, dom.segments[sg].a) +
-                   " to " + vertex_name(dom.plc, dom.segments[sg].b) +
-                   " bounds only one facet side (this facet) and no side of it is in the "
-                   "domain; every segment must be shared by two or more facet sides, except "
-                   "the free edges of a facet inside the domain. Add the missing facet; if a "
-                   "vertex of a neighbouring facet should split this edge, it must lie "
-                   "exactly on it");
-      fail(dom.plc, dom.plc.facets[f].line,
-           "volume holes: " +
-               (F.part_of >= 0 ? "a part of " + facet_name(dom.plc, static_cast<std::size_t>(F.part_of))
-                               : facet_name(dom.plc, f)) +
-               " has no domain on either side (volume hole points mark the regions on both "
-               "sides of it, or it lies in a void); remove that surface or the hole point "
-               "that empties the region it bounds");
-    }
+    if (!front && !back) gone.push_back(f);
     F.separates = front != back;
     for (FacetTri& t : F.tris) t.inward = static_cast<std::int8_t>(front ? 1 : -1);
   }
   for (DomainSegment& s : dom.segments)
     for (HalfFacet& h : s.sides)
       h.inside_after = static_cast<std::int8_t>(inside(cells.cell_of_side(h.facet, h.tri, h.dir)) ? 1 : -1);
+  return gone;
+}
+
+// Facets (or parts) with no domain on either side: between two voids, or a void and the
+// outside. TetGen drops them; so does pdr (PlcDomain::dropped), unless the domain would be
+// empty: then the boundary is open, or every region is a void, and the input is refused.
+void drop_facets(PlcDomain& dom, const std::vector<std::uint32_t>& gone) {
+  if (gone.empty()) return;
+  std::size_t faces = 0;
+  for (const DomainFacet& F : dom.facets) faces += F.tris.empty() ? 0 : 1;
+  if (gone.size() == faces) {
+    const std::uint32_t f = gone.front();
+    // An open boundary (a facet missing) leaves every facet with no domain on either
+    // side: say where it is open.
+    for (const std::uint32_t sg : dom.facets[f].segments)
+      if (dom.segments[sg].sides.size() == 1)
+        fail(dom.plc, dom.plc.facets[f].line,
+             "closed boundary: the segment from " + vertex_name(dom.plc, dom.segments[sg].a) +
+                 " to " + vertex_name(dom.plc, dom.segments[sg].b) +
+                 " bounds only one facet side (this facet) and no side of it is in the "
+                 "domain; every segment must be shared by two or more facet sides, except "
+                 "the free edges of a facet inside the domain. Add the missing facet; if a "
+                 "vertex of a neighbouring facet should split this edge, it must lie "
+                 "exactly on it");
+    if (dom.plc.holes.empty())
+      fail(dom.plc, dom.plc.facets[f].line,
+           "closed boundary: the facets enclose no volume (" + facet_name(dom.plc, f) +
+               " and every other one has the outside on both sides); a domain is the "
+               "volume its facets enclose");
+    fail(dom.plc, dom.plc.facets[f].line,
+         "volume holes: every region is a void (volume hole points mark them all), so "
+         "the domain is empty; remove the hole point of a region to mesh it");
+  }
+  std::vector<std::uint8_t> is_gone(dom.facets.size(), 0);
+  for (const std::uint32_t f : gone) {
+    DomainFacet& F = dom.facets[f];
+    is_gone[f] = 1;
+    PlcDomain::Dropped d{F.part_of >= 0 ? static_cast<std::uint32_t>(F.part_of) : f, {}};
+    for (const FacetTri& t : F.tris) d.tris.push_back(t.v);
+    dom.dropped.push_back(std::move(d));
+    F.is_face = false;
+    F.tris.clear();
+    F.vertices.clear();
+    F.segments.clear();
+  }
+  std::vector<std::int64_t> id(dom.segments.size(), -1);
+  std::vector<DomainSegment> kept;
+  for (std::size_t i = 0; i < dom.segments.size(); ++i) {
+    DomainSegment& s = dom.segments[i];
+    std::erase_if(s.sides, [&](const HalfFacet& h) { return is_gone[h.facet] != 0; });
+    std::erase_if(s.facets, [&](std::uint32_t f) { return is_gone[f] != 0; });
+    if (s.sides.empty() && s.facets.empty()) {
+      dom.dropped_segments.push_back({s.a, s.b});
+      continue;
+    }
+    id[i] = static_cast<std::int64_t>(kept.size());
+    kept.push_back(std::move(s));
+  }
+  dom.segments = std::move(kept);
+  const auto renumber = [&](std::vector<std::uint32_t>& list) {
+    std::vector<std::uint32_t> out;
+    for (const std::uint32_t sg : list)
+      if (id[sg] >= 0) out.push_back(static_cast<std::uint32_t>(id[sg]));
+    list = std::move(out);
+  };
+  for (DomainFacet& F : dom.facets) renumber(F.segments);
+  for (auto& list : dom.vertex_segments) renumber(list);
+  for (auto& list : dom.vertex_facets)
+    std::erase_if(list, [&](std::uint32_t f) { return is_gone[f] != 0; });
+  std::erase_if(dom.tolerance_facets, [&](std::uint32_t f) { return is_gone[f] != 0; });
 }
 
 void check_region_points(const PlcDomain& dom, const Cells& cells) {
@@ -267,8 +319,9 @@ void orient_boundary(PlcDomain& dom) {
   if (split_mixed_facets(dom, *cells)) cells.emplace(dom);  // the same cells, renumbered triangles
   number_shells(dom);
   locate_holes(dom, *cells);
-  mark_inside(dom, *cells);
+  const std::vector<std::uint32_t> gone = mark_inside(dom, *cells);
   check_region_points(dom, *cells);
+  drop_facets(dom, gone);  // after the last use of the cells, which point into the facets
 }
 
 }  // namespace pdr::domain::detail

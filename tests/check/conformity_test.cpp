@@ -72,6 +72,40 @@ TEST(Conformity, InternalFacetIsCoveredByInteriorFaces) {
   EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 6u * 9 * 2 + 9 * 2);
 }
 
+// Pieces the domain analysis dropped (bounding no region, as TetGen drops them) are not
+// asked of the mesh, and a mesher may leave out the vertices only they hold; a mesh that
+// covers a dropped piece has boundary faces in no facet.
+TEST(Conformity, DroppedPiecesAreNotRequired) {
+  Plc d = box_domain(3);
+  const std::uint32_t n = static_cast<std::uint32_t>(d.points.size());
+  for (int k = 0; k < 4; ++k) d.points.push_back({10.0, k % 2 * 1.0, k / 2 * 1.0});
+  PlcFacet far;
+  far.polygons.push_back({n, n + 1, n + 3, n + 2});
+  d.facets.push_back(far);
+  const std::uint32_t facet = static_cast<std::uint32_t>(d.facets.size() - 1);
+  EXPECT_EQ(failed(run(kuhn_grid(3), d)), Ids{"conformity.vertices"});
+  Options o;
+  o.dropped_tris = {{facet, {n, n + 1, n + 3}}, {facet, {n, n + 3, n + 2}}};
+  o.dropped_segments = {{n, n + 1}, {n + 1, n + 3}, {n + 3, n + 2}, {n + 2, n}};
+  o.dropped_vertices = {n, n + 1, n + 2, n + 3};
+  const Report r = run(kuhn_grid(3), d, o);
+  EXPECT_TRUE(r.ok()) << to_text(r);
+  EXPECT_EQ(result(r, "conformity.segments").status, Status::Pass) << to_text(r);
+  EXPECT_EQ(result(r, "conformity.facets").status, Status::Pass) << to_text(r);
+
+  // The bottom facet's triangle (0,0)-(3,0)-(0,3) dropped: the mesh's faces there are in
+  // no facet.
+  Options half;
+  Plc b = box_domain(3);
+  const PlcFacet& bottom = b.facets[0];
+  ASSERT_EQ(bottom.polygons.at(0).size(), 4u);
+  const auto& q = bottom.polygons[0];
+  half.dropped_tris = {{0, {q[0], q[1], q[2]}}};
+  const Report h = run(kuhn_grid(3), b, half);
+  EXPECT_EQ(failed(h), Ids{"conformity.volume"}) << to_text(h);
+  EXPECT_EQ(result(h, "conformity.facets").status, Status::Pass) << to_text(h);
+}
+
 TEST(Encroachment, VertexNearASubsegmentFails) {
   MeshData m = kuhn_grid(3);
   m.points[grid_id(3, 1, 1, 1)] = {0.3, 0.3, 0.3};  // 70% along the edge to the corner

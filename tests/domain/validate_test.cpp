@@ -570,10 +570,29 @@ TEST(PlcValidate, NestedShellsAreRegionsUnlessAHolePointEmptiesThem) {
   EXPECT_EQ(separates(t), (std::vector<int>{1, 0, 0}));
   for (std::size_t f = 18; f < 30; ++f) EXPECT_TRUE(t.facets[f].separates) << f;
 
+  // The outermost region a void: the outer box's surface bounds no region and is dropped
+  // (TetGen drops it too), with its segments; the two inner boxes stay.
   Plc outer = nest;
-  outer.holes.push_back({1, 1, 1});  // the outer box's surface bounds no region
-  EXPECT_NE(error_of(outer).find("has no domain on either side"), std::string::npos)
-      << error_of(outer);
+  outer.holes.push_back({1, 1, 1});
+  const PlcDomain o = build_domain(outer);
+  ASSERT_EQ(o.dropped.size(), 6u);
+  for (std::uint32_t f = 0; f < 6; ++f) {
+    EXPECT_EQ(o.dropped[f].facet, f);
+    EXPECT_EQ(o.dropped[f].tris.size(), 2u);
+    EXPECT_TRUE(o.facets[f].tris.empty());
+  }
+  EXPECT_EQ(o.dropped_segments.size(), 12u);
+  EXPECT_EQ(o.segments.size(), 24u);
+  for (const DomainSegment& s : o.segments) {
+    EXPECT_EQ(s.sides.size(), 2u);
+    for (const HalfFacet& h : s.sides) EXPECT_GE(h.facet, 6u);
+  }
+  for (std::uint32_t v = 0; v < 8; ++v) EXPECT_TRUE(o.vertex_facets[v].empty() && o.vertex_segments[v].empty());
+  EXPECT_EQ(inside(o), (std::vector<int>{0, 1, 1}));
+  // Every region a void: the domain is empty, refused.
+  outer.holes.push_back({3, 3, 3});
+  outer.holes.push_back({5, 5, 5});
+  EXPECT_NE(error_of(outer).find("every region is a void"), std::string::npos) << error_of(outer);
 }
 
 // Facet walls splitting a region: three facet sides around a segment where a wall meets
@@ -608,12 +627,18 @@ TEST(PlcValidate, FacetWallsSplitARegionIntoCells) {
   std::size_t inside = 0;
   for (const std::uint8_t x : m.cell_inside) inside += x;
   EXPECT_EQ(inside, 2u);
-  // In walled_box itself the void would leave its cube's bottom with no domain on either side.
+  // In walled_box itself a void middle cube leaves its outer facets with no domain on
+  // either side: they are dropped (its bottom, facet 8 among them), the walls separate.
   Plc middle = three;
   middle.holes.push_back({1.5, 0.5, 0.5});
   relabel(middle);
-  EXPECT_NE(error_of(middle).find("facet 8 (line 208) has no domain on either side"), std::string::npos)
-      << error_of(middle);
+  const PlcDomain v = build_domain(middle);
+  std::vector<std::uint32_t> gone;
+  for (const PlcDomain::Dropped& x : v.dropped) gone.push_back(x.facet);
+  EXPECT_NE(std::find(gone.begin(), gone.end(), 8u), gone.end());
+  EXPECT_EQ(gone.size(), 4u);
+  EXPECT_TRUE(v.facets[1].separates && v.facets[2].separates);
+  EXPECT_EQ(v.dropped_segments.size(), 4u);  // its edges along x; the others are the walls'
 
   Plc region = three;
   PlcRegion r;
@@ -683,10 +708,10 @@ TEST(PlcCells, WallsInsideFacetsFacetsOfTwoCellsAndEmptyComplexes) {
   std::size_t internal = 0;
   for (const DomainFacet& f : b.facets) internal += !f.separates;
   EXPECT_EQ(internal, b.facets.size() - 6);
-  // Alone it bounds no region: refused.
+  // Alone it encloses no volume: refused.
   Plc alone = house;
   alone.facets.resize(alone.facets.size() - 6);
-  EXPECT_NE(error_of(alone).find("has no domain on either side"), std::string::npos) << error_of(alone);
+  EXPECT_NE(error_of(alone).find("the facets enclose no volume"), std::string::npos) << error_of(alone);
 }
 
 TEST(PlcValidate, RejectsSegmentsInsideAFacetWithoutBeingItsEdges) {

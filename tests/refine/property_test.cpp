@@ -79,6 +79,7 @@ TEST(RefineProperty, GeneratedDomainsAreAdmissibleAndRoundTrip) {
     RC_CLASSIFY(facet_holes, "facet with a hole");
     RC_CLASSIFY(multi_polygon, "facet of several polygons");
     RC_CLASSIFY(!plc.holes.empty(), "void");
+    RC_CLASSIFY(!an.report.dropped_facets.empty(), "facets bounding no region (dropped)");
     const auto path = std::filesystem::temp_directory_path() /
                       ("pdr-roundtrip-" + std::to_string(::getpid()) + ".poly");
     std::ofstream(path) << poly_text(plc, "round trip");

@@ -116,8 +116,10 @@ Plc hex_on_slab(double unit, bool rounded) {
 
 // nx x ny x nz cubes of side `unit`, each a region of its own: every face of every cube a
 // square facet (walls between cubes, three or four facet sides around their edges), read as
-// TetGen reads a .poly; with `hole`, the middle cube (all counts odd and >= 3) is a void.
-Plc walled_grid(double unit, int nx, int ny, int nz, bool hole) {
+// TetGen reads a .poly. The cubes flagged in `voids` (by index i + nx (j + ny k)) are voids,
+// each marked by a hole point: a face between two voids, or a void and the outside, bounds
+// no region and is dropped, as TetGen drops it.
+Plc walled_grid(double unit, int nx, int ny, int nz, const std::vector<bool>& voids) {
   const auto id = [&](int i, int j, int k) { return static_cast<std::uint32_t>((k * (ny + 1) + j) * (nx + 1) + i); };
   std::vector<Point> p;
   for (int k = 0; k <= nz; ++k)
@@ -135,10 +137,13 @@ Plc walled_grid(double unit, int nx, int ny, int nz, bool hole) {
       for (int j = 0; j < ny; ++j) f.push_back({{id(i, j, k), id(i, j + 1, k), id(i, j + 1, k + 1), id(i, j, k + 1)}});
   Plc plc = make_plc(p, f);
   plc.enclosure = Enclosure::HolePoints;
-  if (hole && nx % 2 == 1 && ny % 2 == 1 && nz % 2 == 1 && std::min({nx, ny, nz}) >= 3) {
-    plc.holes.push_back({nx * unit / 2, ny * unit / 2, nz * unit / 2});
-    relabel(plc);
-  }
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const auto c = static_cast<std::size_t>(i + nx * (j + ny * k));
+        if (c < voids.size() && voids[c]) plc.holes.push_back({(i + 0.5) * unit, (j + 0.5) * unit, (k + 0.5) * unit});
+      }
+  relabel(plc);
   return plc;
 }
 
@@ -152,7 +157,11 @@ rc::Gen<Plc> gen_admissible_domain(bool rounded_hexagons) {
     if (kind == 4) {
       const auto n = [] { return *rc::gen::inRange(1, 4); };
       const int nx = n(), ny = n(), nz = n();
-      return walled_grid(unit, nx, ny, nz, *rc::gen::inRange(0, 2) == 1);
+      // Each cube a void one time in four, one at least kept.
+      std::vector<bool> voids;
+      for (int c = 0; c < nx * ny * nz; ++c) voids.push_back(*rc::gen::inRange(0, 4) == 0);
+      voids[static_cast<std::size_t>(*rc::gen::inRange(0, nx * ny * nz))] = false;
+      return walled_grid(unit, nx, ny, nz, voids);
     }
     const double z1 = *rc::gen::inRange(1, 4) * unit;
     if (kind == 1) return hex_prism(hexagon(unit, rounded_hexagons), 0, 0, 0, z1);
