@@ -201,6 +201,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   // Voids no hole point marks: TetGen would mesh them as regions (README, Formats).
   if (!an.report.unmarked_voids.empty())
     summary.set("unmarked_voids", report.at("unmarked_voids"));
+  // A surface file with walls: every bounded cell is a region, as TetGen reads it.
+  if (an.report.surface_walls)
+    summary.set("surface_walls", "edges of three or more faces: every bounded cell is a region");
   // Facets between voids, or a void and the outside: dropped, as TetGen drops them.
   if (!an.report.dropped_facets.empty())
     summary.set("dropped_facets", report.at("dropped_facets"));

@@ -78,6 +78,7 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
   std::sort(r.dropped_facets.begin(), r.dropped_facets.end());
   r.dropped_facets.erase(std::unique(r.dropped_facets.begin(), r.dropped_facets.end()),
                          r.dropped_facets.end());
+  r.surface_walls = dom.surface_walls;
   r.volume_holes = plc.holes.size();
   for (const PlcFacet& f : plc.facets) r.facet_holes += f.holes.size();
   r.regions = plc.regions.size();
@@ -113,6 +114,10 @@ std::string render_text(const DomainReport& r) {
   for (const auto& [f, line] : r.unmarked_voids)
     o << "    the void bounded by facet " << f << at_line(line)
       << " holds no volume hole point (TetGen would mesh it as a region)\n";
+  if (r.surface_walls)
+    o << "    the surface has walls (edges of three or more faces), which parity misreads: "
+         "every bounded cell is a region, as TetGen reads a surface (a void needs a .poly "
+         "with a volume hole point)\n";
   for (const auto& [f, line] : r.dropped_facets)
     o << "    facet " << f << at_line(line)
       << " bounds no region (voids or the outside on both sides) and is dropped, all or in "
@@ -170,6 +175,7 @@ nlohmann::json to_json(const DomainReport& r) {
   json dropped = json::array();
   for (const auto& [f, line] : r.dropped_facets) dropped.push_back({{"facet", f}, {"line", line}});
   j["dropped_facets"] = dropped;
+  j["surface_walls"] = r.surface_walls;
   j["bounding_box"] = {{"min", r.bbox_lo}, {"max", r.bbox_hi}};
   json tol = json::array();
   for (const ToleranceFacet& t : r.tolerance_facets)

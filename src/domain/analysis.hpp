@@ -44,6 +44,8 @@ struct DomainReport {
   // Each input facet (and its line) of which all or a part bounds no region (voids or the
   // outside on both sides): that part is dropped, as TetGen drops it (PlcDomain::dropped).
   std::vector<std::pair<std::uint32_t, std::size_t>> dropped_facets;
+  // A surface file with walls (PlcDomain::surface_walls): every bounded cell is a region.
+  bool surface_walls = false;
   std::size_t volume_holes = 0, facet_holes = 0, regions = 0;
   Point bbox_lo{}, bbox_hi{};           // of the boundary vertices
   double planarity_tolerance = 0;

@@ -177,31 +177,28 @@ void build_structure(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
   }
 }
 
-void check_closed(const PlcDomain& dom) {
+void check_closed(PlcDomain& dom) {
   const Plc& plc = dom.plc;
-  const bool walls = plc.enclosure == Enclosure::HolePoints;
+  if (plc.enclosure == Enclosure::HolePoints) return;  // open edges: domain/orient.cpp
+  bool walls = false;
   for (const DomainSegment& s : dom.segments) {
-    const std::size_t k = s.sides.size();
-    if (k % 2 == 0 || walls) continue;
+    walls = walls || s.sides.size() > 2;
+    if (s.sides.size() != 1) continue;
     const std::string seg = "the segment from " + vertex_name(plc, s.a) + " to " +
                             vertex_name(plc, s.b);
-    const std::size_t line = plc.facets[s.sides[0].facet].line;
-    if (k == 1)
-      fail(plc, line,
-           "closed boundary: " + seg + " bounds only one facet side (this facet); every "
-           "segment must be shared by two or more facet sides (two for a manifold "
-           "surface). Add the missing facet; if a vertex of a neighbouring facet should "
-           "split this edge, it must lie exactly on it");
-    std::ostringstream others;
-    for (std::size_t i = 0; i < s.facets.size(); ++i)
-      others << (i ? ", " : "") << facet_name(plc, s.facets[i]);
-    fail(plc, line,
-         "closed boundary: " + seg + " bounds " + std::to_string(k) +
-             " facet sides (" + others.str() +
-             "), an odd number; a surface file is read by parity, which needs a boundary "
-             "closed mod 2 (a facet wall splitting a region in two is read from a .poly or "
-             ".smesh, where volume hole points say which regions are voids); remove or "
-             "complete the extra facet");
+    fail(plc, plc.facets[s.sides[0].facet].line,
+         "closed boundary: " + seg + " bounds only one facet side (this facet); every "
+         "segment must be shared by two or more facet sides (two for a manifold "
+         "surface). Add the missing facet; if a vertex of a neighbouring facet should "
+         "split this edge, it must lie exactly on it");
+  }
+  // A surface with walls (an edge of three or more faces: an assembly's shared face, a wall
+  // splitting a body, bodies touching along an edge) is no 2-manifold, and parity misreads
+  // it (the middle one of five tets filling a cube is enclosed twice): every bounded cell
+  // is a region, as TetGen reads any surface.
+  if (walls) {
+    dom.plc.enclosure = Enclosure::HolePoints;
+    dom.surface_walls = true;
   }
 }
 

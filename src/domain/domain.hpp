@@ -119,6 +119,10 @@ struct PlcDomain {
   };
   std::vector<Dropped> dropped;
   std::vector<std::array<std::uint32_t, 2>> dropped_segments;
+  // Read from a surface file with walls (an edge of three or more faces): parity misreads
+  // such a surface, and every bounded cell is a region, as TetGen reads it (plc.enclosure
+  // is then HolePoints).
+  bool surface_walls = false;
 
   std::optional<std::uint32_t> find_segment(std::uint32_t a, std::uint32_t b) const;
   std::size_t face_count() const;

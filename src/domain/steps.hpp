@@ -43,8 +43,9 @@ void triangulate_faces(const std::vector<FacetPolys>& polys, PlcDomain& dom);
 void build_structure(const std::vector<FacetPolys>& polys, PlcDomain& dom);
 // Step 5 (domain/crossing.cpp).
 void check_crossings(const PlcDomain& dom);
-// Step 6 (domain/build.cpp).
-void check_closed(const PlcDomain& dom);
+// Step 6 (domain/build.cpp); a surface with walls is then read as a .poly without hole
+// points (surface_walls).
+void check_closed(PlcDomain& dom);
 // Cells, orientation and step 7: volume hole and region points (domain/orient.cpp).
 void orient_boundary(PlcDomain& dom);
 

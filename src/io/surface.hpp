@@ -9,10 +9,12 @@
 //      corner; -0 equals 0) become one; a coordinate that is not finite is an error;
 //   2. non-degenerate faces: a face has at least 3 corners, no vertex twice (after step 1)
 //      and not all corners on one line (exact, orient2d in the three axis projections);
-//   3. closed, edge-manifold surface: every edge joins exactly two faces (an open edge or
-//      an edge of 3+ faces is an error naming the edge and a face that uses it);
+//   3. closed surface: every edge joins two or more faces (an open edge is an error naming
+//      the edge and the face that uses it); an edge of three or more (a wall between two
+//      bodies, or bodies touching along it) joins no faces in the steps below, and becomes
+//      a segment of the facets around it;
 //   4. orientation: faces are reoriented, per connected piece, so that the two faces of
-//      every edge run along it in opposite directions (pdr's Plc has no face orientation;
+//      every edge of exactly two run along it in opposite directions (pdr's Plc has no face orientation;
 //      this only lets step 5 tell a flat joint from a fold); a non-orientable surface is an
 //      error;
 //   5. coplanar facets: two faces sharing an edge with the same marker, each exactly planar,
@@ -80,7 +82,7 @@ struct Surface {
   }
 };
 
-// The Plc of a closed, edge-manifold surface; see the steps above.
+// The Plc of a closed surface (every edge of two or more faces); see the steps above.
 // planarity_tolerance: step 5b's (the domain analysis's default, PlcOptions).
 Plc surface_to_plc(const Surface& surface, double planarity_tolerance = 1e-9);
 

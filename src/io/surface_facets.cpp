@@ -159,6 +159,7 @@ void merge_within_tolerance(const Surface& s, const SurfaceTopology& t, double t
         const std::size_t b = s.face_start[f], n = s.face_start[f + 1] - b;
         for (std::size_t i = 0; i < n; ++i) {
           const std::uint32_t g = t.neighbour[b + i];
+          if (g == SurfaceTopology::kNoNeighbour) continue;
           const std::uint32_t root = uf.find(g);
           if (root == uf.find(seed) || taken[root] || s.face_markers[f] != s.face_markers[g] ||
               !unfolded(s, t, f, g) || !plane.add(region_vertices(root), tolerance))
@@ -186,7 +187,8 @@ std::vector<std::vector<std::uint32_t>> boundary_loops(const Surface& s,
   for (std::uint32_t f : r.faces) {
     const auto c = t.face(s, f);
     for (std::size_t i = 0; i < c.size(); ++i)
-      if (uf.find(t.neighbour[s.face_start[f] + i]) != root)
+      if (const std::uint32_t g = t.neighbour[s.face_start[f] + i];
+          g == SurfaceTopology::kNoNeighbour || uf.find(g) != root)
         edges.push_back({c[i], c[(i + 1) % c.size()]});
   }
   std::sort(edges.begin(), edges.end());
@@ -322,7 +324,7 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
     const std::size_t b = s.face_start[f], n = s.face_start[f + 1] - b;
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint32_t g = t.neighbour[b + i];
-      if (g > f && uf.find(g) != uf.find(static_cast<std::uint32_t>(f)) &&
+      if (g != SurfaceTopology::kNoNeighbour && g > f && uf.find(g) != uf.find(static_cast<std::uint32_t>(f)) &&
           same_facet(s, t, f, g, i))
         uf.join(static_cast<std::uint32_t>(f), g);
     }

@@ -1,6 +1,6 @@
 // Steps 1-4 of surface_to_plc (surface.hpp): duplicate vertices, degenerate faces, closed
-// edge-manifold surface, consistent orientation. Every decision is exact: coordinates are
-// compared with ==, collinearity and planarity with orient2d/orient3d.
+// surface (edges of two or more faces), consistent orientation. Every decision is exact:
+// coordinates are compared with ==, collinearity and planarity with orient2d/orient3d.
 #include "io/surface_topology.hpp"
 
 #include <algorithm>
@@ -109,8 +109,9 @@ struct EdgeUse {
   }
 };
 
-// Step 3: every edge joins exactly two faces. Reports the offending edge whose first face
-// comes first in the file.
+// Step 3: every edge joins two or more faces; returns the uses of the edges of exactly two,
+// in pairs (an edge of three or more, a wall or bodies touching along it, pairs no faces).
+// Reports the open edge whose first face comes first in the file.
 std::vector<EdgeUse> pair_edges(const Surface& s, const SurfaceTopology& t) {
   std::vector<EdgeUse> uses;
   uses.reserve(t.corners.size());
@@ -123,33 +124,25 @@ std::vector<EdgeUse> pair_edges(const Surface& s, const SurfaceTopology& t) {
     }
   }
   std::sort(uses.begin(), uses.end());
-  std::size_t bad = uses.size(), bad_count = 0;
+  std::size_t open = uses.size();
+  std::vector<EdgeUse> pairs;
+  pairs.reserve(uses.size());
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i + 1;
     while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
-    if (j - i != 2 && (bad == uses.size() || uses[i].face < uses[bad].face)) {
-      bad = i;
-      bad_count = j - i;
-    }
+    if (j - i == 1 && (open == uses.size() || uses[i].face < uses[open].face)) open = i;
+    if (j - i == 2) pairs.insert(pairs.end(), uses.begin() + static_cast<std::ptrdiff_t>(i),
+                                 uses.begin() + static_cast<std::ptrdiff_t>(j));
     i = j;
   }
-  if (bad != uses.size()) {
-    const EdgeUse& e = uses[bad];
-    const std::string edge = "the edge from " + vertex_name(s, t, e.lo) + " to " +
-                             vertex_name(s, t, e.hi);
-    if (bad_count == 1)
-      face_fail(s, e.face, "closed surface: " + edge + " belongs to no other face, so the "
-                           "surface is open there; close it (every edge must join exactly "
-                           "two faces)");
-    std::string faces;
-    for (std::size_t k = bad; k < bad + bad_count; ++k)
-      faces += (k == bad ? "" : ", ") + std::to_string(uses[k].face + 1);
-    face_fail(s, e.face, "edge-manifold surface: " + edge + " joins " +
-                             std::to_string(bad_count) + " faces (" + faces +
-                             "); every edge must join exactly two faces: remove the doubled "
-                             "faces or separate the bodies that touch along this edge");
+  if (open != uses.size()) {
+    const EdgeUse& e = uses[open];
+    face_fail(s, e.face, "closed surface: the edge from " + vertex_name(s, t, e.lo) + " to " +
+                             vertex_name(s, t, e.hi) + " belongs to no other face, so the "
+                             "surface is open there; close it (every edge must join two or "
+                             "more faces)");
   }
-  return uses;
+  return pairs;
 }
 
 // Step 4: reverse faces, one connected piece at a time, until the two faces of every edge
@@ -193,7 +186,7 @@ void orient(const Surface& s, SurfaceTopology& t, const std::vector<EdgeUse>& us
       }
     }
   }
-  t.neighbour.assign(t.corners.size(), 0);
+  t.neighbour.assign(t.corners.size(), SurfaceTopology::kNoNeighbour);
   for (std::size_t p = 0; p < uses.size(); p += 2) {
     t.neighbour[uses[p].corner] = uses[p + 1].face;
     t.neighbour[uses[p + 1].corner] = uses[p].face;

@@ -1,7 +1,7 @@
 // The combinatorial half of surface_to_plc (internal to pdr_io; steps 1-4 of surface.hpp):
 // duplicate vertices merged, faces checked for degeneracy and planarity, every edge joining
-// exactly two faces, faces reoriented so that those two run along it in opposite
-// directions. The geometric half (coplanar facets, loops, hole points) is
+// two or more faces, faces reoriented so that the two faces of every edge of exactly two run
+// along it in opposite directions. The geometric half (coplanar facets, loops, hole points) is
 // surface_facets.cpp.
 #pragma once
 
@@ -22,9 +22,10 @@ struct SurfaceTopology {
   std::vector<std::uint32_t> corners;     // as Surface::corners, renumbered and reoriented
   std::vector<std::uint8_t> planar;       // per face: every corner exactly on `plane`'s plane
   std::vector<std::array<std::uint32_t, 3>> plane;  // per face: three non-collinear corners
-  // Per face: another face across the edge from corner i to corner i+1, at
-  // neighbour[face_start[f] + i].
+  // Per face: the other face across the edge from corner i to corner i+1, at
+  // neighbour[face_start[f] + i]; kNoNeighbour where three or more faces share the edge.
   std::vector<std::uint32_t> neighbour;
+  static constexpr std::uint32_t kNoNeighbour = ~std::uint32_t{0};
 
   std::span<const std::uint32_t> face(const Surface& s, std::size_t f) const {
     return {corners.data() + s.face_start[f], s.face_start[f + 1] - s.face_start[f]};

@@ -485,6 +485,32 @@ TEST_F(Cli, MeshSplitsRegionsAtFacetWalls) {
   EXPECT_EQ(again.code, 0) << again.out;
   // Checked against the domain without the hole, the same mesh misses the middle cube.
   EXPECT_EQ(run("check " + path("h") + " --domain " + path("plain.poly")).code, 1);
+
+  // A surface file of two cubes sharing a face listed once (a wall), as an assembly is
+  // exported: no 2-manifold, so every bounded cell is a region, as TetGen reads it.
+  std::ostringstream off;
+  off << "OFF\n12 11 0\n";
+  for (int x = 0; x <= 2; ++x)
+    for (const auto& [y, z] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}})
+      off << x << ' ' << y << ' ' << z << '\n';
+  for (int x = 0; x <= 2; ++x) off << "4 " << 4 * x << ' ' << 4 * x + 1 << ' ' << 4 * x + 2 << ' ' << 4 * x + 3 << '\n';
+  for (int c = 0; c < 2; ++c) {
+    const int a = 4 * c, b = 4 * c + 4;
+    off << "4 " << a << ' ' << b << ' ' << b + 1 << ' ' << a + 1 << '\n'
+        << "4 " << a + 3 << ' ' << b + 3 << ' ' << b + 2 << ' ' << a + 2 << '\n'
+        << "4 " << a << ' ' << b << ' ' << b + 3 << ' ' << a + 3 << '\n'
+        << "4 " << a + 1 << ' ' << b + 1 << ' ' << b + 2 << ' ' << a + 2 << '\n';
+  }
+  write("pair.off", off.str());
+  const Outcome o = run("mesh " + path("pair.off") + " -o " + path("o") + " --max-volume 0.05");
+  ASSERT_EQ(o.code, 0) << o.out;
+  EXPECT_NE(o.out.find("surface_walls:"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("check: pass"), std::string::npos) << o.out;
+  EXPECT_NEAR(mesh_volume(path("o")), 2, 1e-12);
+  named.clear();
+  for (const auto& [key, n] : labels(path("o"))) named.insert(key);
+  EXPECT_EQ(named, (std::set<std::pair<int, int>>{{0, 1}, {1, 2}}));
+  EXPECT_EQ(run("check " + path("o") + " --domain " + path("pair.off")).code, 0);
 }
 
 // Facets with free edges inside the domain, as TetGen meshes them: a crack (a square

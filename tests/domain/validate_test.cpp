@@ -343,11 +343,17 @@ TEST(PlcValidate, AcceptsFacetHolesAndTunnels) {
   expect_inward_towards(dom, 6, 10, {1.5, 1.5, 0.5}, -1);
 
   // Without the facet holes the caps cover the tunnel: each tunnel edge on a cap is then
-  // inside the cap (2 sides) and on a tunnel wall (1 side), an odd count.
+  // inside the cap (2 sides) and on a tunnel wall (1 side), and the tunnel walls split the
+  // box into two cells. Read from a surface file (walls: no 2-manifold), every bounded
+  // cell is a region, as TetGen reads it, and the walls are internal.
   Plc covered = p;
   covered.facets[0].holes.clear();
   covered.facets[1].holes.clear();
-  EXPECT_NE(error_of(covered).find("closed boundary"), std::string::npos);
+  const PlcDomain c = build_domain(covered);
+  EXPECT_TRUE(c.surface_walls || covered.enclosure == Enclosure::HolePoints);
+  EXPECT_EQ(c.cells, 2u);
+  EXPECT_EQ(c.cell_inside, (std::vector<std::uint8_t>{1, 1}));
+  for (std::size_t f = 6; f < 10; ++f) EXPECT_FALSE(c.facets[f].separates) << f;
 }
 
 TEST(PlcValidate, RejectsBadFacetHoles) {
@@ -650,11 +656,30 @@ TEST(PlcValidate, FacetWallsSplitARegionIntoCells) {
   relabel(on_wall);
   EXPECT_NE(error_of(on_wall).find("lies on facet 2"), std::string::npos) << error_of(on_wall);
 
-  // Read by parity (a surface file), the odd count is refused with what to do.
+  // Read from a surface file (parity), walls (edges of three or more faces) make every
+  // bounded cell a region, as TetGen reads a surface, the walls internal; nested in a
+  // larger box, the two cubes and the space around them are three regions; no hole point
+  // can be given there.
   Plc parity = three;
   parity.enclosure = Enclosure::Parity;
-  EXPECT_NE(error_of(parity).find("bounds 3 facet sides"), std::string::npos) << error_of(parity);
-  EXPECT_NE(error_of(parity).find("read from a .poly"), std::string::npos);
+  const PlcDomain p = build_domain(parity);
+  EXPECT_TRUE(p.surface_walls);
+  EXPECT_EQ(p.plc.enclosure, Enclosure::HolePoints);
+  EXPECT_EQ(p.cell_inside, (std::vector<std::uint8_t>{1, 1, 1}));
+  for (std::uint32_t f = 0; f < p.facets.size(); ++f) EXPECT_EQ(p.facets[f].separates, f != 1 && f != 2) << f;
+  Plc boxed = nested;
+  boxed.enclosure = Enclosure::Parity;
+  boxed.holes.clear();
+  const PlcDomain b = build_domain(boxed);
+  EXPECT_EQ(b.cell_inside, (std::vector<std::uint8_t>{1, 1, 1}));
+  for (std::uint32_t f = 0; f < b.facets.size(); ++f) EXPECT_EQ(b.facets[f].separates, f < 6) << f;
+  // A 2-manifold surface (no walls), parity still reads a shell inside another as a void.
+  Plc hollow = merge(box({-2, -2, -2}, {4, 3, 3}), box({-1, -1, -1}, {3, 2, 2}));
+  hollow.enclosure = Enclosure::Parity;
+  relabel(hollow);
+  const PlcDomain h = build_domain(hollow);
+  EXPECT_FALSE(h.surface_walls);
+  EXPECT_EQ(h.cell_inside, (std::vector<std::uint8_t>{1, 0}));
 }
 
 // Regional volume bounds: a region record's volume bounds the cell its point lies in (the
