@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "domain/steps.hpp"
 #include "domain/validate.hpp"
 
 namespace pdr::domain {
@@ -49,6 +50,33 @@ std::string describe(const AngleRecord& r) {
   std::string s = o.str();
   if (!s.empty() && s.back() == ';') s.pop_back();
   return s;
+}
+
+// Unrelated components (sharing no vertex) must lie apart: closer than the planarity
+// tolerance times the domain's size they touch or cross, to within rounding (rotated boxes
+// stacked with a face on a face a few ulps apart), and no mesh can resolve the gap. This
+// classifies the input, as the planarity tolerance does; it decides nothing in the mesher.
+void check_apart(const PlcDomain& dom, const FeatureSize& fs) {
+  if (!std::isfinite(fs.min_distance)) return;
+  const Plc& plc = dom.plc;
+  Point lo = plc.points.front(), hi = lo;
+  for (const Point& p : plc.points)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double size = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  if (fs.min_distance > dom.options.planarity_tolerance * size) return;
+  const auto line = [&](ComponentKind k, std::uint32_t id) -> std::size_t {
+    if (k == ComponentKind::Facet) return plc.facets[id].line;
+    const std::uint32_t v = k == ComponentKind::Vertex ? id : dom.segments[id].a;
+    return v < plc.point_lines.size() ? plc.point_lines[v] : 0;
+  };
+  detail::fail(plc, line(fs.first_kind, fs.first),
+               "components apart: " + describe(dom, fs.first_kind, fs.first) + " and " +
+                   describe(dom, fs.second_kind, fs.second) + " share no vertex but are " +
+                   num(fs.min_distance, "%.3g") +
+                   " apart, within the planarity tolerance (" +
+                   num(dom.options.planarity_tolerance, "%.3g") +
+                   " of the domain's size): they touch or cross. Join them at common "
+                   "vertices and segments, or move them apart");
 }
 
 }  // namespace
@@ -223,7 +251,9 @@ nlohmann::json to_json(const DomainReport& r) {
 
 DomainAnalysis analyze(const Plc& plc, const PlcOptions& options) {
   DomainAnalysis a{build_domain(plc, options), {}};
-  a.report = make_report(a.domain, check_admissibility(a.domain), feature_size(a.domain));
+  const FeatureSize fs = feature_size(a.domain);
+  check_apart(a.domain, fs);
+  a.report = make_report(a.domain, check_admissibility(a.domain), fs);
   return a;
 }
 

@@ -5,6 +5,8 @@
 //
 // surface_to_plc, in this order, throwing InputError at the first failure (a file without
 // faces is one):
+//   0. repeated faces: a face whose corners are, as a set, an earlier face's (a face that
+//      two closed bodies of an assembly share, each giving it) is read once;
 //   1. duplicate vertices: vertices with exactly equal coordinates (STL repeats every
 //      corner; -0 equals 0) become one; a coordinate that is not finite is an error;
 //   2. non-degenerate faces: a face has at least 3 corners, no vertex twice (after step 1)

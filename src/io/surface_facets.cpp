@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "geom/predicates.hpp"
@@ -313,10 +314,47 @@ PlcFacet region_facet(const Surface& s, const SurfaceTopology& t, const Region& 
 
 }  // namespace
 
+namespace {
+
+// Step 0: a face whose corners are, as a set, those of an earlier face (a face two bodies
+// of an assembly share, each giving it) is read once. Null when no face repeats.
+std::optional<Surface> without_repeated_faces(const Surface& s) {
+  for (const Point& p : s.points)  // step 1 names a coordinate that is not finite
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return std::nullopt;
+  const std::size_t nf = s.face_count();
+  std::vector<std::vector<Point>> key(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (const std::uint32_t c : s.face(f)) key[f].push_back(s.points[c]);
+    std::sort(key[f].begin(), key[f].end());
+  }
+  std::vector<std::uint32_t> order(nf);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+  std::vector<std::uint8_t> repeat(nf, 0);
+  bool any = false;
+  for (std::size_t i = 1; i < nf; ++i)
+    if (key[order[i]] == key[order[i - 1]]) {
+      repeat[order[i]] = 1;
+      any = true;
+    }
+  if (!any) return std::nullopt;
+  Surface out;
+  out.source = s.source;
+  out.points = s.points;
+  out.point_lines = s.point_lines;
+  out.point_ids = s.point_ids;
+  for (std::size_t f = 0; f < nf; ++f)
+    if (!repeat[f]) out.add_face(s.face(f), s.face_lines[f], s.face_markers[f]);
+  return out;
+}
+
+}  // namespace
+
 Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
   if (s.face_count() == 0)
     throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
                                   "closed surface of triangles or polygons");
+  if (const auto once = without_repeated_faces(s)) return surface_to_plc(*once, planarity_tolerance);
   const SurfaceTopology t = build_topology(s);
   const std::size_t nf = s.face_count();
   UnionFind uf(nf);

@@ -513,6 +513,60 @@ TEST_F(Cli, MeshSplitsRegionsAtFacetWalls) {
   EXPECT_EQ(run("check " + path("o") + " --domain " + path("pair.off")).code, 0);
 }
 
+// An assembly as CAD tools export it: four rotated boxes in one STL, each closed, so that
+// every face two boxes share is given twice. The repeat is read once, the surface has
+// walls, and each box is a region of its own (four labels, the total volume exact). Boxes
+// whose faces only partly overlap touch where they share no vertex: refused (exit 2).
+TEST_F(Cli, MeshReadsAnAssemblyOfClosedBodies) {
+  const auto stl = [](const std::vector<std::array<double, 6>>& boxes) {
+    const double a = 0.3, b = 1.1, ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
+    const auto rot = [&](double x, double y, double z) {
+      const double y1 = ca * y - sa * z, z1 = sa * y + ca * z;
+      return std::array<double, 3>{cb * x + sb * z1, y1, -sb * x + cb * z1};
+    };
+    std::ostringstream o;
+    o.precision(17);
+    o << "solid assembly\n";
+    const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& x : boxes) {
+      std::array<std::array<double, 3>, 8> c;
+      for (int k = 0; k < 8; ++k) c[static_cast<std::size_t>(k)] = rot(x[k & 1 ? 3 : 0], x[k & 2 ? 4 : 1], x[k & 4 ? 5 : 2]);
+      for (const auto& f : q)
+        for (const auto& t : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
+          o << "facet normal 0 0 0\nouter loop\n";
+          for (const int k : t) {
+            const auto& p = c[static_cast<std::size_t>(k)];
+            o << "vertex " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+          }
+          o << "endloop\nendfacet\n";
+        }
+    }
+    o << "endsolid assembly\n";
+    return o.str();
+  };
+  write("four.stl", stl({{0, 0, 0, 1, 1, 1}, {1, 0, 0, 2, 1, 1}, {0, 1, 0, 1, 2, 1}, {1, 1, 0, 2, 2, 1}}));
+  const Outcome r = run("mesh " + path("four.stl") + " -o " + path("m") + " --max-volume 0.01");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("surface_walls:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("check: pass"), std::string::npos) << r.out;
+  EXPECT_NEAR(mesh_volume(path("m")), 4, 1e-9);
+  std::set<double> seen;
+  const auto tets = records(path("m.ele"));
+  for (std::size_t i = 1; i < tets.size(); ++i)
+    if (tets[i].size() > 5) seen.insert(tets[i][5]);
+  EXPECT_EQ(seen.size(), 4u);
+
+  // A long box on two short ones: its face overlaps theirs, its corners lie on their edges,
+  // exactly or (rotated) to within rounding: they cross, or touch where they share no
+  // vertex.
+  write("overlap.stl", stl({{0, 0, 0, 1, 1, 1}, {1, 0, 0, 2, 1, 1}, {0, 1, 0, 2, 2, 1}}));
+  const Outcome bad = run("mesh " + path("overlap.stl") + " -o " + path("bad"));
+  EXPECT_EQ(bad.code, 2) << bad.out;
+  EXPECT_TRUE(bad.out.find("non-crossing components:") != std::string::npos ||
+              bad.out.find("components apart:") != std::string::npos)
+      << bad.out;
+}
+
 // Facets with free edges inside the domain, as TetGen meshes them: a crack (a square
 // floating in a box, every edge free) and a wall with a window (a facet hole whose rim is
 // free). Each free edge bounds one facet side, the domain turns 360 degrees around it; the

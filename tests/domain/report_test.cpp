@@ -1,7 +1,11 @@
 // The domain report (paper §1.1, §2.1) as text and JSON.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "domain/analysis.hpp"
+#include "io/error.hpp"
 #include "support/plc_fixtures.hpp"
 
 namespace pdr::domain::test {
@@ -55,6 +59,28 @@ TEST(PlcReport, VoidsWithoutHolePointsAreListed) {
   EXPECT_EQ(analyze_domain(read_data("cube-in-cube.poly")).voids, 1u);
   EXPECT_TRUE(analyze_domain(read_data("cube-in-cube.poly")).unmarked_voids.empty());
   EXPECT_EQ(analyze_domain(read_data("box.poly")).voids, 0u);
+}
+
+// Unrelated components closer than the planarity tolerance (of the domain's size) touch or
+// cross to within rounding: a box stacked on another, rotated, its bottom corners a few
+// ulps off the other's top face. Refused (exit 2), naming the pair; a gap above the
+// tolerance is a small feature and meshes.
+TEST(PlcReport, ComponentsWithinTheToleranceAreRefused) {
+  const auto stacked = [](double gap) {
+    Plc plc = merge(box({0, 0, 0}, {2, 2, 1}), box({0.5, 0.5, 1 + gap}, {1.5, 1.5, 2}));
+    const double c = std::cos(0.7), s = std::sin(0.7);
+    for (Point& p : plc.points) p = {c * p[0] - s * p[2], p[1], s * p[0] + c * p[2]};
+    return plc;
+  };
+  std::string error;
+  try {
+    analyze(stacked(0));
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("components apart:"), std::string::npos) << error;
+  EXPECT_NE(error.find("within the planarity tolerance"), std::string::npos) << error;
+  EXPECT_GT(analyze(stacked(1e-6)).report.feature.d, 0);
 }
 
 }  // namespace
