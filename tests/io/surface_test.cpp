@@ -241,36 +241,29 @@ TEST(Surface, EdgesOfThreeOrMoreFacesSeparateFacets) {
     EXPECT_EQ(f.polygons[0].size(), 4u);
   }
 
-  std::string pair = "OFF\n16 24 0\n";
-  for (int b = 0; b < 2; ++b)
-    for (int k = 0; k < 8; ++k)
-      pair += std::to_string(b + (k & 1)) + " " + std::to_string(b + (k >> 1 & 1)) + " " +
-              std::to_string(k >> 2) + "\n";
-  const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (int b = 0; b < 2; ++b)
-    for (const auto& f : q) {
-      const int o = 8 * b;
-      pair += "3 " + std::to_string(o + f[0]) + " " + std::to_string(o + f[1]) + " " + std::to_string(o + f[2]) + "\n";
-      pair += "3 " + std::to_string(o + f[0]) + " " + std::to_string(o + f[2]) + " " + std::to_string(o + f[3]) + "\n";
-    }
-  const Plc touching = read_off_text(dir, pair);
+  // Two unit cubes of triangles, the second moved by (1, dy, 0), each closed.
+  const auto two_cubes = [](int dy) {
+    std::string off = "OFF\n16 24 0\n";
+    for (int b = 0; b < 2; ++b)
+      for (int k = 0; k < 8; ++k)
+        off += std::to_string(b + (k & 1)) + " " + std::to_string(b * dy + (k >> 1 & 1)) + " " +
+               std::to_string(k >> 2) + "\n";
+    const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int b = 0; b < 2; ++b)
+      for (const auto& f : q) {
+        const std::string o[4] = {std::to_string(8 * b + f[0]), std::to_string(8 * b + f[1]),
+                                  std::to_string(8 * b + f[2]), std::to_string(8 * b + f[3])};
+        off += "3 " + o[0] + " " + o[1] + " " + o[2] + "\n3 " + o[0] + " " + o[2] + " " + o[3] + "\n";
+      }
+    return off;
+  };
+  const Plc touching = read_off_text(dir, two_cubes(1));
   EXPECT_EQ(touching.facets.size(), 12u);
   EXPECT_EQ(touching.points.size(), 14u);  // corners (1, 1, 0) and (1, 1, 1) shared
 
-  // Two closed cubes of an assembly, each giving the face they share (in its own
-  // orientation and triangulation order): the repeat is read once, as the wall above.
-  std::string assembly = "OFF\n16 24 0\n";
-  for (int b = 0; b < 2; ++b)
-    for (int k = 0; k < 8; ++k)
-      assembly += std::to_string(b + (k & 1)) + " " + std::to_string(k >> 1 & 1) + " " +
-                  std::to_string(k >> 2) + "\n";
-  for (int b = 0; b < 2; ++b)
-    for (const auto& f : q) {
-      const int o = 8 * b;
-      assembly += "3 " + std::to_string(o + f[0]) + " " + std::to_string(o + f[2]) + " " + std::to_string(o + f[1]) + "\n";
-      assembly += "3 " + std::to_string(o + f[0]) + " " + std::to_string(o + f[3]) + " " + std::to_string(o + f[2]) + "\n";
-    }
-  const Plc shared = read_off_text(dir, assembly);
+  // Two closed cubes of an assembly, each giving the face x = 1 they share: the repeat is
+  // read once, as the wall above.
+  const Plc shared = read_off_text(dir, two_cubes(0));
   EXPECT_EQ(shared.facets.size(), 11u);
   EXPECT_EQ(shared.points.size(), 12u);
 }
