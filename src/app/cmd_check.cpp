@@ -90,7 +90,7 @@ int run_check(const CheckArgs& args) {
   // The domain as pdr reads it: the pieces that bound no region are not required (TetGen
   // drops them too). A domain pdr refuses is checked as given.
   if (domain) try {
-      skip_dropped(domain::build_domain(*domain), opt);
+      skip_dropped(domain::build_domain(*domain, plc_options(args.planarity_tolerance)), opt);
     } catch (const InputError&) {
     }
   const auto view = check::view_of(mesh);

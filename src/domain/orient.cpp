@@ -131,16 +131,14 @@ std::vector<std::uint32_t> mark_inside(PlcDomain& dom, const Cells& cells) {
 }
 
 // Facets (or parts) with no domain on either side: between two voids, or a void and the
-// outside. TetGen drops them; so does pdr (PlcDomain::dropped), unless the domain would be
-// empty: then the boundary is open, or every region is a void, and the input is refused.
+// outside. TetGen drops them; so does pdr (PlcDomain::dropped), unless one has a free edge
+// (an open surface: the boundary is open there) or the domain would be empty (the facets
+// enclose no volume, or every region is a void): then the input is refused.
 void drop_facets(PlcDomain& dom, const std::vector<std::uint32_t>& gone) {
   if (gone.empty()) return;
-  std::size_t faces = 0;
-  for (const DomainFacet& F : dom.facets) faces += F.tris.empty() ? 0 : 1;
-  if (gone.size() == faces) {
-    const std::uint32_t f = gone.front();
-    // An open boundary (a facet missing) leaves every facet with no domain on either
-    // side: say where it is open.
+  // A dropped facet with a free edge (one facet side) is an open surface, not a wall
+  // between voids: the boundary is open there.
+  for (const std::uint32_t f : gone)
     for (const std::uint32_t sg : dom.facets[f].segments)
       if (dom.segments[sg].sides.size() == 1)
         fail(dom.plc, dom.plc.facets[f].line,
@@ -151,6 +149,10 @@ void drop_facets(PlcDomain& dom, const std::vector<std::uint32_t>& gone) {
                  "the free edges of a facet inside the domain. Add the missing facet; if a "
                  "vertex of a neighbouring facet should split this edge, it must lie "
                  "exactly on it");
+  std::size_t faces = 0;
+  for (const DomainFacet& F : dom.facets) faces += F.tris.empty() ? 0 : 1;
+  if (gone.size() == faces) {
+    const std::uint32_t f = gone.front();
     if (dom.plc.holes.empty())
       fail(dom.plc, dom.plc.facets[f].line,
            "closed boundary: the facets enclose no volume (" + facet_name(dom.plc, f) +
@@ -176,9 +178,12 @@ void drop_facets(PlcDomain& dom, const std::vector<std::uint32_t>& gone) {
   std::vector<DomainSegment> kept;
   for (std::size_t i = 0; i < dom.segments.size(); ++i) {
     DomainSegment& s = dom.segments[i];
-    std::erase_if(s.sides, [&](const HalfFacet& h) { return is_gone[h.facet] != 0; });
-    std::erase_if(s.facets, [&](std::uint32_t f) { return is_gone[f] != 0; });
-    if (s.sides.empty() && s.facets.empty()) {
+    // Only a segment that loses every facet to dropped ones goes (a standalone segment,
+    // on no facet side, stays).
+    const std::size_t lost =
+        std::erase_if(s.sides, [&](const HalfFacet& h) { return is_gone[h.facet] != 0; }) +
+        std::erase_if(s.facets, [&](std::uint32_t f) { return is_gone[f] != 0; });
+    if (lost > 0 && s.sides.empty() && s.facets.empty()) {
       dom.dropped_segments.push_back({s.a, s.b});
       continue;
     }

@@ -645,6 +645,21 @@ TEST(PlcValidate, FacetWallsSplitARegionIntoCells) {
   EXPECT_EQ(gone.size(), 4u);
   EXPECT_TRUE(v.facets[1].separates && v.facets[2].separates);
   EXPECT_EQ(v.dropped_segments.size(), 4u);  // its edges along x; the others are the walls'
+  // A standalone segment inside the first cube stays; a second box with a face missing,
+  // open, is refused though it bounds no region either.
+  Plc rod = middle;
+  rod.points.push_back({0.2, 0.5, 0.5});
+  rod.points.push_back({0.8, 0.5, 0.5});
+  PlcFacet seg;
+  seg.polygons = {{static_cast<std::uint32_t>(rod.points.size() - 2), static_cast<std::uint32_t>(rod.points.size() - 1)}};
+  rod.facets.push_back(seg);
+  relabel(rod);
+  EXPECT_TRUE(build_domain(rod).find_segment(static_cast<std::uint32_t>(rod.points.size() - 2),
+                                             static_cast<std::uint32_t>(rod.points.size() - 1)));
+  Plc open = merge(middle, box({5, 0, 0}, {6, 1, 1}));
+  open.facets.pop_back();
+  relabel(open);
+  EXPECT_NE(error_of(open).find("closed boundary:"), std::string::npos) << error_of(open);
 
   Plc region = three;
   PlcRegion r;
