@@ -102,6 +102,9 @@ void skip_dropped(const domain::PlcDomain& dom, check::Options& options) {
   for (const domain::DomainSegment& s : dom.segments) state[s.a] = state[s.b] = 2;
   for (std::uint32_t v = 0; v < state.size(); ++v)
     if (state[v] == 1) options.dropped_vertices.push_back(v);
+  // So may it the isolated vertices outside Ω (TetGen does).
+  options.dropped_vertices.insert(options.dropped_vertices.end(), dom.outside_vertices.begin(),
+                                  dom.outside_vertices.end());
 }
 
 void write_outputs(const MeshData& mesh, const std::string& prefix,

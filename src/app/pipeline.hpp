@@ -29,7 +29,7 @@ std::vector<std::string> record_check(const check::Report& report, bool with_rep
                                       Summary& summary);
 
 // The pieces of `dom` its analysis dropped (PlcDomain::dropped): the checker does not
-// require them in the mesh.
+// require them in the mesh, nor the isolated vertices outside Ω.
 void skip_dropped(const domain::PlcDomain& dom, check::Options& options);
 
 // The summary's closing entries: seconds per phase and the peak memory.

@@ -119,6 +119,7 @@ struct PlcDomain {
   };
   std::vector<Dropped> dropped;
   std::vector<std::array<std::uint32_t, 2>> dropped_segments;
+  std::vector<std::uint32_t> outside_vertices;  // isolated ones in a void or outside Ω
   // Read from a surface file with walls (an edge of three or more faces): parity misreads
   // such a surface, and every bounded cell is a region, as TetGen reads it (plc.enclosure
   // is then HolePoints).

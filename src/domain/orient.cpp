@@ -326,6 +326,11 @@ void orient_boundary(PlcDomain& dom) {
   locate_holes(dom, *cells);
   const std::vector<std::uint32_t> gone = mark_inside(dom, *cells);
   check_region_points(dom, *cells);
+  // Isolated vertices (off every facet, crossing.cpp) in a void or outside.
+  for (std::uint32_t v = 0; v < dom.vertex_count(); ++v)
+    if (dom.vertex_facets[v].empty() && dom.vertex_segments[v].empty())
+      if (const int c = cells->locate(make_rat(dom.plc.points[v])); c < 0 || !dom.cell_inside[static_cast<std::size_t>(c)])
+        dom.outside_vertices.push_back(v);
   drop_facets(dom, gone);  // after the last use of the cells, which point into the facets
 }
 

@@ -656,6 +656,13 @@ TEST(PlcValidate, FacetWallsSplitARegionIntoCells) {
   relabel(rod);
   EXPECT_TRUE(build_domain(rod).find_segment(static_cast<std::uint32_t>(rod.points.size() - 2),
                                              static_cast<std::uint32_t>(rod.points.size() - 1)));
+  // Isolated vertices: one in the void cube, one outside, one in a region; the first two
+  // are outside Ω (a mesher may leave them out, as TetGen does).
+  Plc lone = middle;
+  for (const Point& p : {Point{1.5, 0.5, 0.5}, Point{9, 9, 9}, Point{0.5, 0.5, 0.5}}) lone.points.push_back(p);
+  relabel(lone);
+  const auto n = static_cast<std::uint32_t>(middle.points.size());
+  EXPECT_EQ(build_domain(lone).outside_vertices, (std::vector<std::uint32_t>{n, n + 1}));
   Plc open = merge(middle, box({5, 0, 0}, {6, 1, 1}));
   open.facets.pop_back();
   relabel(open);
