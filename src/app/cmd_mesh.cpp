@@ -56,9 +56,9 @@ void check_range(const Plc& plc) {
 // The in-domain tets and the subfacets (with their facets' markers) as a MeshData: the
 // boundary faces, then the faces of internal facets (between two regions, as TetGen lists
 // them; oriented out of their lower tet slot); with region records in the input, or
-// internal facets making several regions, each tet's region attribute too
-// (app/regions.hpp; TetGen's -A).
-MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc) {
+// several regions (internal facets, or `cells` > 1: bodies apart, or touching along an
+// edge), each tet's region attribute too (app/regions.hpp; TetGen's -A).
+MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc, std::size_t cells) {
   MeshData mesh = to_mesh_data(m.dt, m.inside);
   const auto& facets = m.surf.facets;
   const bool internal = std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; });
@@ -75,7 +75,7 @@ MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc) {
       }
     }
   }
-  if (!plc.regions.empty() || internal) {
+  if (!plc.regions.empty() || internal || cells > 1) {
     const std::vector<int> label = region_labels(m, plc.regions);
     const TetStore& s = m.dt.store();
     mesh.tet_regions.reserve(mesh.tets.size());
@@ -264,7 +264,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                              " Lemma 1 failures (inadmissible domain); first: " +
                              rr.stats.audit_note);
 
-  MeshData mesh = export_domain(vm, an.domain.plc);
+  MeshData mesh = export_domain(
+      vm, an.domain.plc,
+      static_cast<std::size_t>(std::count(an.domain.cell_inside.begin(), an.domain.cell_inside.end(), 1)));
   summary.set("vertices", mesh.points.size());
   summary.set("tets", mesh.tets.size());
   summary.set("boundary_faces", mesh.faces.size());

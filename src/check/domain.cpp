@@ -54,7 +54,9 @@ SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const DomainMap& m, con
     s.status = ItemStatus::Degenerate;
     return s;
   }
-  const double dist = tol * len;
+  // Relative to |AB|, plus the rounding of a vertex computed at this magnitude (a unit
+  // segment far from the origin: its midpoint rounds farther off the line than tol |AB|).
+  const double dist = tol > 0 ? tol * len + 4 * kEps * std::max(max_abs(A), max_abs(B)) : 0;
   // Piecewise boxes along AB; the pad covers the rounding of the pieces' ends.
   const double pad = dist * (1 + 1e-9) + 8 * kEps * std::max(max_abs(A), max_abs(B)) + 0x1p-1000;
   const double side = grid.frame().side();
@@ -145,7 +147,8 @@ FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const Dom
   fm.drop = drop;
   const Box fbox = bounding_box(pts);
   const double diam = norm(sub(fbox.hi, fbox.lo));
-  const double dist = tol * diam, nn = norm(n);
+  const double dist = tol > 0 ? tol * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0,
+               nn = norm(n);
   auto on_plane = [&](const Point& p, bool& tolerance) {
     tolerance = false;
     if (signs::orient3d(a, b, c, p) == Sign::Zero) return true;

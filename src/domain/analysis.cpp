@@ -52,31 +52,33 @@ std::string describe(const AngleRecord& r) {
   return s;
 }
 
-// Unrelated components (sharing no vertex) must lie apart: closer than the planarity
-// tolerance times the domain's size they touch or cross, to within rounding (rotated boxes
-// stacked with a face on a face a few ulps apart), and no mesh can resolve the gap. This
-// classifies the input, as the planarity tolerance does; it decides nothing in the mesher.
+// Unrelated components (sharing no vertex) must lie apart by more than double coordinates
+// resolve: closer than 2^-40 (about 1e-12) times the largest coordinate magnitude (a few
+// thousand units in the last place) no vertex can be placed between them, and they touch
+// or cross to within rounding (rotated boxes stacked face on face, a few ulps apart). This
+// classifies the input; it decides nothing in the mesher.
 void check_apart(const PlcDomain& dom, const FeatureSize& fs) {
   if (!std::isfinite(fs.min_distance)) return;
   const Plc& plc = dom.plc;
-  Point lo = plc.points.front(), hi = lo;
+  double scale = 0;
   for (const Point& p : plc.points)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  const double size = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-  if (fs.min_distance > dom.options.planarity_tolerance * size) return;
+    for (const double c : p) scale = std::max(scale, std::fabs(c));
+  if (fs.min_distance > std::ldexp(scale, -40)) return;
   const auto line = [&](ComponentKind k, std::uint32_t id) -> std::size_t {
     if (k == ComponentKind::Facet) return plc.facets[id].line;
     const std::uint32_t v = k == ComponentKind::Vertex ? id : dom.segments[id].a;
     return v < plc.point_lines.size() ? plc.point_lines[v] : 0;
   };
+  const bool points = fs.first_kind == ComponentKind::Vertex && fs.second_kind == ComponentKind::Vertex;
   detail::fail(plc, line(fs.first_kind, fs.first),
                "components apart: " + describe(dom, fs.first_kind, fs.first) + " and " +
-                   describe(dom, fs.second_kind, fs.second) + " share no vertex but are " +
+                   describe(dom, fs.second_kind, fs.second) + " are " +
                    num(fs.min_distance, "%.3g") +
-                   " apart, within the planarity tolerance (" +
-                   num(dom.options.planarity_tolerance, "%.3g") +
-                   " of the domain's size): they touch or cross. Join them at common "
-                   "vertices and segments, or move them apart");
+                   " apart, closer than double coordinates of this magnitude resolve (2^-40 "
+                   "of the largest, " + num(scale, "%.3g") + ")" +
+                   (points ? ": merge the two vertices"
+                           : ", and share no vertex: they touch or cross. Join them at "
+                             "common vertices and segments, or move them apart"));
 }
 
 }  // namespace

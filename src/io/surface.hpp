@@ -66,6 +66,8 @@ struct Surface {
   std::vector<std::size_t> face_start{0};  // face f is corners[face_start[f], face_start[f+1])
   std::vector<std::size_t> face_lines;   // one per face; 0 in binary files
   std::vector<int> face_markers;         // one per face (0: none)
+  std::vector<std::size_t> face_numbers;  // the file's number of each face (messages);
+                                          // empty: f + 1
 
   std::size_t face_count() const { return face_start.size() - 1; }
   std::span<const std::uint32_t> face(std::size_t f) const {

@@ -70,7 +70,7 @@ bool same_facet(const Surface& s, const SurfaceTopology& t, std::size_t f, std::
                                            "itself; fix the face");
   if (sf != sg) {
     const auto fc = t.face(s, f);
-    face_fail(s, f, "no folded faces: this face and " + face_name(g) +
+    face_fail(s, f, "no folded faces: this face and " + face_name(s, g) +
                         " are coplanar and lie on the same side of their common edge from " +
                         vertex_name(s, t, fc[i]) + " to " +
                         vertex_name(s, t, fc[(i + 1) % fc.size()]) +
@@ -344,7 +344,10 @@ std::optional<Surface> without_repeated_faces(const Surface& s) {
   out.point_lines = s.point_lines;
   out.point_ids = s.point_ids;
   for (std::size_t f = 0; f < nf; ++f)
-    if (!repeat[f]) out.add_face(s.face(f), s.face_lines[f], s.face_markers[f]);
+    if (!repeat[f]) {
+      out.add_face(s.face(f), s.face_lines[f], s.face_markers[f]);
+      out.face_numbers.push_back(f < s.face_numbers.size() ? s.face_numbers[f] : f + 1);
+    }
   return out;
 }
 

@@ -13,7 +13,9 @@
 
 namespace pdr::io {
 
-std::string face_name(std::size_t f) { return "face " + std::to_string(f + 1); }
+std::string face_name(const Surface& s, std::size_t f) {
+  return "face " + std::to_string(f < s.face_numbers.size() ? s.face_numbers[f] : f + 1);
+}
 
 std::string vertex_name(const Surface& s, const SurfaceTopology& t, std::uint32_t v) {
   const std::int64_t id = s.point_ids[t.input_of[v]];
@@ -22,7 +24,7 @@ std::string vertex_name(const Surface& s, const SurfaceTopology& t, std::uint32_
 }
 
 void face_fail(const Surface& s, std::size_t f, const std::string& problem) {
-  throw InputError(s.source, s.face_lines[f], face_name(f) + ": " + problem);
+  throw InputError(s.source, s.face_lines[f], face_name(s, f) + ": " + problem);
 }
 
 namespace {

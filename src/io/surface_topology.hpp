@@ -36,7 +36,7 @@ struct SurfaceTopology {
 SurfaceTopology build_topology(const Surface& s);
 
 // "face 12" (faces numbered from 1), for messages.
-std::string face_name(std::size_t f);
+std::string face_name(const Surface& s, std::size_t f);
 // "vertex 7 (x, y, z)", or "(x, y, z)" when the file does not number its vertices.
 std::string vertex_name(const Surface& s, const SurfaceTopology& t, std::uint32_t v);
 // Throws InputError(source, line of face f, "face N: <problem>").

@@ -556,6 +556,24 @@ TEST_F(Cli, MeshReadsAnAssemblyOfClosedBodies) {
     if (tets[i].size() > 5) seen.insert(tets[i][5]);
   EXPECT_EQ(seen.size(), 4u);
 
+  // Two boxes touching along an edge only: two regions, labelled (TetGen's -A does).
+  write("edge.stl", stl({{0, 0, 0, 1, 1, 1}, {1, 1, 0, 2, 2, 1}}));
+  const Outcome e = run("mesh " + path("edge.stl") + " -o " + path("e") + " --max-volume 0.05");
+  ASSERT_EQ(e.code, 0) << e.out;
+  std::set<double> two;
+  const auto etets = records(path("e.ele"));
+  for (std::size_t i = 1; i < etets.size(); ++i)
+    if (etets[i].size() > 5) two.insert(etets[i][5]);
+  EXPECT_EQ(two.size(), 2u);
+
+  // A rotated box a million units from the origin: the split points round a few ulps of
+  // 1e6 off its tilted segments and facets, more than 1e-10 of their length; the checker
+  // classifies them on (its tolerance includes that rounding).
+  write("far.stl", stl({{1e6, 1e6, 1e6, 1e6 + 1, 1e6 + 1, 1e6 + 1}}));
+  const Outcome f = run("mesh " + path("far.stl") + " -o " + path("f") + " --max-volume 0.05");
+  EXPECT_EQ(f.code, 0) << f.out;
+  EXPECT_NE(f.out.find("check: pass"), std::string::npos) << f.out;
+
   // A long box on two short ones: its face overlaps theirs, its corners lie on their edges,
   // exactly or (rotated) to within rounding: they cross, or touch where they share no
   // vertex.

@@ -61,11 +61,11 @@ TEST(PlcReport, VoidsWithoutHolePointsAreListed) {
   EXPECT_EQ(analyze_domain(read_data("box.poly")).voids, 0u);
 }
 
-// Unrelated components closer than the planarity tolerance (of the domain's size) touch or
-// cross to within rounding: a box stacked on another, rotated, its bottom corners a few
-// ulps off the other's top face. Refused (exit 2), naming the pair; a gap above the
-// tolerance is a small feature and meshes.
-TEST(PlcReport, ComponentsWithinTheToleranceAreRefused) {
+// Unrelated components closer than double coordinates resolve touch or cross to within
+// rounding: a box stacked on another, rotated, its bottom corners a few ulps off the
+// other's top face. Refused (exit 2), naming the pair; a small gap is a small feature and
+// meshes, and so does a short edge, or a part far from another.
+TEST(PlcReport, ComponentsCloserThanDoublesResolveAreRefused) {
   const auto stacked = [](double gap) {
     Plc plc = merge(box({0, 0, 0}, {2, 2, 1}), box({0.5, 0.5, 1 + gap}, {1.5, 1.5, 2}));
     const double c = std::cos(0.7), s = std::sin(0.7);
@@ -79,8 +79,23 @@ TEST(PlcReport, ComponentsWithinTheToleranceAreRefused) {
     error = e.what();
   }
   EXPECT_NE(error.find("components apart:"), std::string::npos) << error;
-  EXPECT_NE(error.find("within the planarity tolerance"), std::string::npos) << error;
+  EXPECT_NE(error.find("closer than double coordinates of this magnitude resolve"), std::string::npos) << error;
   EXPECT_GT(analyze(stacked(1e-6)).report.feature.d, 0);
+  Plc edge = box({0, 0, 0}, {1, 1, 1});  // its top face's front edge split 1e-9 from a corner
+  edge.points.push_back({1 - 1e-9, 0, 1});
+  for (PlcFacet& f : edge.facets)
+    for (auto& poly : f.polygons)
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Point &a = edge.points[poly[i]], &b = edge.points[poly[(i + 1) % poly.size()]];
+        if (a[1] == 0 && b[1] == 0 && a[2] == 1 && b[2] == 1) {
+          poly.insert(poly.begin() + static_cast<std::ptrdiff_t>(i) + 1, static_cast<std::uint32_t>(edge.points.size() - 1));
+          break;
+        }
+      }
+  relabel(edge);
+  EXPECT_NEAR(analyze(edge).report.feature.min_distance, 1e-9, 1e-15);
+  const Plc far = merge(box({0, 0, 0}, {1, 1, 1}), box({2e9, 0, 0}, {2e9 + 1, 1, 1}));
+  EXPECT_EQ(analyze(far).report.feature.min_distance, 1.0);
 }
 
 }  // namespace

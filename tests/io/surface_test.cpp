@@ -287,6 +287,13 @@ TEST(Surface, DefectsAreNamedWithTheirLine) {
   fin.faces.pop_back();
   const std::string once = off_error(off_text(fin));
   EXPECT_EQ(once.substr(once.find("s.off:")), m.substr(m.find("s.off:")));
+  // After a repeated face is read once, messages still number faces as the file does.
+  Shape late = box_triangles();
+  late.faces.push_back(late.faces[0]);
+  late.points.push_back({0.5, -1, 0.5});
+  late.faces.push_back({0, 1, 8});
+  m = off_error(off_text(late));
+  EXPECT_NE(m.find(": face 14: closed surface:"), std::string::npos) << m;
 
 
   // A sliver triangle with three collinear corners.
