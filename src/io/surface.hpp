@@ -35,6 +35,8 @@
 //      kept apart they would be two facets with a segment and small angles between them).
 //      This classifies imprecise input, as the domain's planarity tolerance does, which then
 //      judges each facet;
+//   5c. repeated facets: a facet whose boundary loops are an earlier facet's (a face two
+//      bodies share, each triangulating it its own way) is read once;
 //   6. vertices left only inside a merged facet (the centre of a fan, the inner vertices of
 //      a finely triangulated plane) are not part of the domain and are dropped, unless
 //      another facet uses them, in which case they become 1-vertex polygons of the facet.

@@ -4,6 +4,7 @@
 // point, is an ear's centroid checked with exact orient2d before it is used.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -351,6 +352,37 @@ std::optional<Surface> without_repeated_faces(const Surface& s) {
   return out;
 }
 
+// Step 5c: a facet whose boundary loops are an earlier facet's (a face two bodies share,
+// each triangulating it its own way) is read once; its 1-vertex polygons join the kept one.
+void drop_repeated_facets(Plc& plc) {
+  const auto key = [](const PlcFacet& f) {
+    std::vector<std::vector<std::uint32_t>> loops;
+    for (std::vector<std::uint32_t> p : f.polygons) {
+      if (p.size() < 2) continue;
+      std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+      std::vector<std::uint32_t> back(p.rbegin(), p.rend());
+      std::rotate(back.begin(), std::min_element(back.begin(), back.end()), back.end());
+      loops.push_back(std::min(p, back));
+    }
+    std::sort(loops.begin(), loops.end());
+    return loops;
+  };
+  std::map<std::vector<std::vector<std::uint32_t>>, std::size_t> first;
+  std::vector<PlcFacet> kept;
+  for (PlcFacet& f : plc.facets) {
+    const auto [it, added] = first.emplace(key(f), kept.size());
+    if (added) {
+      kept.push_back(std::move(f));
+      continue;
+    }
+    PlcFacet& k = kept[it->second];
+    for (const auto& p : f.polygons)
+      if (p.size() == 1 && std::find(k.polygons.begin(), k.polygons.end(), p) == k.polygons.end())
+        k.polygons.push_back(p);
+  }
+  plc.facets = std::move(kept);
+}
+
 }  // namespace
 
 Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
@@ -397,6 +429,7 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
   for (std::size_t r = 0; r < regions.size(); ++r)
     for (std::uint32_t v : inner[r])
       if (uses[v]) plc.facets[r].polygons.push_back({v});
+  drop_repeated_facets(plc);
   std::vector<std::uint32_t> renumber(t.points.size(), 0);
   for (std::uint32_t v = 0; v < t.points.size(); ++v) {
     if (!uses[v]) continue;

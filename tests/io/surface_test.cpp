@@ -242,7 +242,7 @@ TEST(Surface, EdgesOfThreeOrMoreFacesSeparateFacets) {
   }
 
   // Two unit cubes of triangles, the second moved by (1, dy, 0), each closed.
-  const auto two_cubes = [](int dy) {
+  const auto two_cubes = [](int dy, bool other_diagonal = false) {
     std::string off = "OFF\n16 24 0\n";
     for (int b = 0; b < 2; ++b)
       for (int k = 0; k < 8; ++k)
@@ -253,7 +253,10 @@ TEST(Surface, EdgesOfThreeOrMoreFacesSeparateFacets) {
       for (const auto& f : q) {
         const std::string o[4] = {std::to_string(8 * b + f[0]), std::to_string(8 * b + f[1]),
                                   std::to_string(8 * b + f[2]), std::to_string(8 * b + f[3])};
-        off += "3 " + o[0] + " " + o[1] + " " + o[2] + "\n3 " + o[0] + " " + o[2] + " " + o[3] + "\n";
+        if (other_diagonal && b == 1)
+          off += "3 " + o[0] + " " + o[1] + " " + o[3] + "\n3 " + o[1] + " " + o[2] + " " + o[3] + "\n";
+        else
+          off += "3 " + o[0] + " " + o[1] + " " + o[2] + "\n3 " + o[0] + " " + o[2] + " " + o[3] + "\n";
       }
     return off;
   };
@@ -265,6 +268,10 @@ TEST(Surface, EdgesOfThreeOrMoreFacesSeparateFacets) {
   // read once, as the wall above.
   const Plc shared = read_off_text(dir, two_cubes(0));
   EXPECT_EQ(shared.facets.size(), 11u);
+  // The second cube triangulates its faces along the other diagonals: the shared square is
+  // no repeated face, but the same facet once merged, read once too.
+  const Plc other = read_off_text(dir, two_cubes(0, true));
+  EXPECT_EQ(other.facets.size(), 11u);
   EXPECT_EQ(shared.points.size(), 12u);
 }
 
