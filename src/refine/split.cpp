@@ -77,7 +77,8 @@ SplitGuard::SplitGuard(const surface::SurfaceMesh& m, const std::vector<std::uin
                                        std::min(cylinders[s], cylinder_cap), s});
 }
 
-std::string SplitGuard::refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f) const {
+std::string SplitGuard::refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f,
+                                        double scale) const {
   const surface::Subfacet& x = m.subfacet(f);
   if (!active() || !guarded_facet_[x.facet]) return {};
   const Point &a = m.point(x.v[0]), &b = m.point(x.v[1]), &c = m.point(x.v[2]);
@@ -88,16 +89,16 @@ std::string SplitGuard::refuse_subfacet(const surface::SurfaceMesh& m, std::uint
     const Point q = construct::triangle_circumcenter(a, b, c);
     for (const Cylinder& y : facet_cylinders_[x.facet]) {
       const double dist = std::sqrt(domain::dist2_point_segment(q, y.a, y.b));
-      if (dist >= y.radius || r >= kCylinderFloor * y.radius) continue;
+      if (dist >= y.radius || r >= scale * kCylinderFloor * y.radius) continue;
       os << "refine.protected: the circumcenter of subfacet (" << x.v[0] << ", " << x.v[1]
          << ", " << x.v[2] << ") of " << m.facet_name(x.facet) << " lies " << dist << " from "
          << m.segment_name(y.segment) << ", inside its protecting cylinder of radius "
          << y.radius << " (a dihedral below 70.53 or above 289.47 deg), and its circumradius " << r
-         << " is below the cylinder's protected length " << kCylinderFloor * y.radius;
+         << " is below the cylinder's protected length " << scale * kCylinderFloor * y.radius;
       return os.str();
     }
   }
-  const double floor = floor_(m.subfacet_size(f));
+  const double floor = scale * floor_(m.subfacet_size(f));
   if (r >= floor) return {};
   os << "refine.protected: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2]
      << ") of " << m.facet_name(x.facet) << " has circumradius " << r

@@ -99,8 +99,10 @@ class SplitGuard {
   // protected length (shells still apply).
   Plan plan(const surface::SurfaceMesh& m, std::uint32_t subsegment,
             bool below_floor = false) const;
-  // Why subfacet f may not be refined, or empty.
-  std::string refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f) const;
+  // Why subfacet f may not be refined, or empty. `scale` < 1 lowers the protected lengths
+  // (a repair's deeper floor).
+  std::string refuse_subfacet(const surface::SurfaceMesh& m, std::uint32_t f,
+                              double scale = 1) const;
   bool active() const { return !acute_.empty(); }
 
  private:
