@@ -250,6 +250,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   if (rr.stats.h_theorem > 0) summary.set("h_theorem", rr.stats.h_theorem);
   summary.set("inserted", nlohmann::json{{"tet_circumcenters", rr.stats.tet_circumcenters},
                            {"subfacet_circumcenters", rr.stats.subfacet_circumcenters},
+                           {"axis_copies", rr.stats.axis_copies},
                            {"subsegment_splits", rr.stats.subsegment_splits},
                            {"refused", rr.stats.refused},
                            {"vertex_cap", rr.stats.vertex_cap},

@@ -2,7 +2,8 @@
 // Refine(t), Refine(f), Refine(s) are here; beside them: the work queue (work_queue.hpp),
 // the vertex budget (budget.hpp), the guards outside the theory (guard.hpp, split.hpp),
 // the closure encroachment tests (closure.hpp), the rounding repairs (flat.hpp), the
-// Lemma 1 audit (audit.hpp) and the leftovers (leftovers.hpp).
+// rotation copies of conformity repairs near sharp axes (axis_zones.hpp), the Lemma 1
+// audit (audit.hpp) and the leftovers (leftovers.hpp).
 #include "refine/seq_refinement.hpp"
 
 #include <unistd.h>
@@ -20,6 +21,7 @@
 #include "geom/point_text.hpp"
 #include "mesh/tables.hpp"
 #include "refine/audit.hpp"
+#include "refine/axis_zones.hpp"
 #include "refine/budget.hpp"
 #include "refine/closure.hpp"
 #include "refine/conformity.hpp"
@@ -30,6 +32,7 @@
 #include "refine/split.hpp"
 #include "refine/work_queue.hpp"
 #include "surface/insert.hpp"
+#include "surface/locate.hpp"
 #include "surface/split.hpp"
 
 namespace pdr::refine {
@@ -145,6 +148,7 @@ class Refiner {
   std::vector<TetId> around_;
   RefusedTets refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
+  AxisZones zones_;      // rotation copies around sharp axes (inadmissible domains only)
   bool watch_encroachment_ = false;  // new stars searched for encroachment (run())
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
   ConformityTracker conformity_;  // refine/conformity.hpp
@@ -180,10 +184,10 @@ class Refiner {
   }
 
   // Repairs of a missing subfacet go below the protected lengths, down to this fraction of
-  // them: at a dihedral below 70.53 degrees the repairs of two facets can take each
-  // other's subfacets out of T in turn, each level half the size of the last (seven walls
-  // around one axis: 60,000 vertices and an edge of 2.5e-32 before this floor). What is
-  // still missing there is listed (exit 3, NOT CONFORMING).
+  // them: a bound, not what ends a cascade of repairs (at dihedrals below 70.53 degrees
+  // around one axis the repairs of two facets took each other's subfacets out of T in turn,
+  // each level half the size of the last; the rotation copies of refine/axis_zones.hpp end
+  // that). What is still missing at the floor is listed (exit 3, NOT CONFORMING).
   static constexpr double kRepairFloor = 0x1p-10;
 
   // Conformity first (refine/conformity.hpp): refines the next element of D missing from T
@@ -203,7 +207,7 @@ class Refiner {
                  !why.empty()) {
         unsplit("volume.conformity: a repair " + why);  // a cascade of repairs
       } else {
-        refine_subfacet(n->e.id, kNoTet, kNoTet, /*below_floor=*/true);
+        refine_subfacet(n->e.id, kNoTet, kNoTet, /*below_floor=*/true, /*repair=*/true);
       }
       if (m_.dt.num_points() == before)
         ++res_.stats.conformity_refused;
@@ -301,6 +305,7 @@ class Refiner {
     if (const auto v = smallest_volume(o_)) cap = std::min(cap, std::cbrt(*v));
     guard_ = SplitGuard(
         m_.surf, acute, [b = budget_](double d) { return b.resolution_at(d) / 64; }, o_.cylinders, cap);
+    zones_ = AxisZones(m_.surf, o_.cylinders, cap);
     const TetStore& s = m_.dt.store();
     std::vector<TetId> all;
     for (TetId t = 0; t < s.slots(); ++t)
@@ -464,42 +469,96 @@ class Refiner {
   }
 
   // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t (kNoTet: f is encroached);
-  // `hint` locates its circumcenter.
-  void refine_subfacet(std::uint32_t f, TetId hint, TetId t, bool below_floor = false) {
+  // `hint` locates its circumcenter. A conformity repair (`repair`) near a sharp axis is
+  // followed by the circumcenter's rotation copies (refine/axis_zones.hpp).
+  void refine_subfacet(std::uint32_t f, TetId hint, TetId t, bool below_floor = false,
+                       bool repair = false) {
     if (std::string why = below_floor ? std::string() : guard_.refuse_subfacet(m_.surf, f);
         !why.empty()) {
       give_up(t, std::move(why));
       return;
     }
-    const surface::FacetCavity fc = plan_circumcenter(m_.surf, f);
-    if (fc.status == surface::CavityStatus::Encroaches && !fc.encroached.empty()) {
-      if (auto why = split(fc.encroached.front(), hint, below_floor)) give_up(t, std::move(*why));
-      return;
-    }
-    if (fc.status != surface::CavityStatus::Ok) {
-      give_up(t, std::string("refine.subfacet: the circumcenter of subfacet ") +
-                     std::to_string(f) + " of " + m_.surf.facet_name(fc.facet) +
-                     " cannot be inserted (" + cavity_status_name(fc.status) + ")");
-      return;
-    }
-    bool outside = false;
-    if (!plan(fc.p, hint, cav2_, outside)) {
-      give_up(t, "refine.subfacet: circumcenter " + point_text(fc.p) + " is already a vertex");
-      return;
-    }
-    if (const auto s = closure_encroached_subsegment(m_, {cav2_.conflict, cav2_.ring}, fc.p)) {
-      if (auto why = split(*s, hint, below_floor)) give_up(t, std::move(*why));
-      return;
-    }
     const Subfacet& x = m_.surf.subfacet(f);
     const double r2 = construct::triangle_circumradius2(
         m_.surf.point(x.v[0]), m_.surf.point(x.v[1]), m_.surf.point(x.v[2]));
-    res_.stats.h = std::min(res_.stats.h, std::sqrt(r2 / 2));
+    const std::string what = "circumcenter of subfacet " + std::to_string(f);
+    surface::FacetCavity fc = plan_circumcenter(m_.surf, f);
+    AxisZones::Placed placed;
+    // In a zone every facet vertex goes to the zone's grid, copies or not: a circumcenter
+    // of a subfacet that mirrors another wall's (up to rounding) then lands on that wall's
+    // copy instead of ulps from it.
+    if (!zones_.empty() && fc.status != surface::CavityStatus::Encroaches) {
+      placed = zones_.place(m_.surf, x.facet, fc.p);
+      if (placed.own != fc.p)
+        fc = surface::build_facet_cavity(m_.surf, x.facet, placed.own, {f}, std::nullopt);
+    }
+    if (insert_on_facet(fc, hint, t, below_floor, r2, what) != OnFacet::Inserted || !repair)
+      return;
+    for (const AxisZones::Copy& c : placed.copies) insert_copy(c, r2);
+  }
+
+  enum class OnFacet { Inserted, SplitInstead, Failed };
+
+  // Inserts the point of facet cavity fc (Fig. 2's Refine(f) once the point is chosen), or
+  // splits the subsegment it encroaches; a failure is given up on t's behalf unless
+  // `quiet` (a rotation copy). `size2`: the squared size of the element refined.
+  OnFacet insert_on_facet(const surface::FacetCavity& fc, TetId hint, TetId t, bool below_floor,
+                          double size2, const std::string& what, bool quiet = false) {
+    const auto fail = [&](std::string why) {
+      if (!quiet) give_up(t, std::move(why));
+      return OnFacet::Failed;
+    };
+    const auto split_instead = [&](std::uint32_t sub) {
+      if (auto why = split(sub, hint, below_floor)) return fail(std::move(*why));
+      return OnFacet::SplitInstead;
+    };
+    if (fc.status == surface::CavityStatus::Encroaches && !fc.encroached.empty())
+      return split_instead(fc.encroached.front());
+    if (fc.status != surface::CavityStatus::Ok)
+      return fail("refine.subfacet: the " + what + " of " + m_.surf.facet_name(fc.facet) +
+                  " cannot be inserted (" + cavity_status_name(fc.status) + ")");
+    bool outside = false;
+    if (!plan(fc.p, hint, cav2_, outside))
+      return fail("refine.subfacet: " + what + " " + point_text(fc.p) + " is already a vertex");
+    if (const auto s = closure_encroached_subsegment(m_, {cav2_.conflict, cav2_.ring}, fc.p))
+      return split_instead(*s);
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(size2 / 2));
     const std::uint32_t sv = m_.surf.add_vertex(fc.p, {HomeKind::Facet, fc.facet});
     commit_facet_cavity(m_.surf, fc, sv);
     const VertexId v = insert(cav2_, sv);
     ++res_.stats.subfacet_circumcenters;
-    after_insert(v, "subfacet", r2);
+    after_insert(v, "subfacet", size2);
+    return OnFacet::Inserted;
+  }
+
+  // A rotation copy of a facet vertex near a sharp axis (refine/axis_zones.hpp), with
+  // Fig. 2's rule: a subsegment it encroaches is split first (below the protected lengths,
+  // as a repair), then the copy is tried again. Nothing is reported when it cannot go in
+  // (outside its facet, on a vertex): the refinement goes on without it.
+  void insert_copy(const AxisZones::Copy& c, double size2) {
+    for (int attempt = 0; attempt < 4 && !at_cap(); ++attempt) {
+      // Start the walk at the axis vertex nearest the copy.
+      const std::vector<std::uint32_t> chain = m_.surf.chain(c.axis);
+      std::uint32_t from = chain.front();
+      double best = std::numeric_limits<double>::infinity();
+      for (const std::uint32_t v : chain) {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) d2 += (m_.surf.point(v)[k] - c.p[k]) * (m_.surf.point(v)[k] - c.p[k]);
+        if (d2 < best) {
+          best = d2;
+          from = v;
+        }
+      }
+      const auto loc = surface::locate_in_facet(m_.surf, c.facet, c.p, from);
+      if (!loc || loc->on_subsegment) return;
+      const surface::FacetCavity fc =
+          surface::build_facet_cavity(m_.surf, c.facet, c.p, {loc->subfacet}, std::nullopt);
+      const TetId hint = m_.dt.last_tet();
+      const OnFacet r = insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, size2,
+                                        "rotation copy", /*quiet=*/true);
+      if (r == OnFacet::Inserted) ++res_.stats.axis_copies;
+      if (r != OnFacet::SplitInstead) return;
+    }
   }
 
   // An element of `holder` (a tet of p's cavity) that p encroaches, refined on behalf of t.

@@ -128,6 +128,7 @@ struct Leftover {
 struct RefineStats {
   std::size_t tet_circumcenters = 0;
   std::size_t subfacet_circumcenters = 0;
+  std::size_t axis_copies = 0;  // rotation copies near sharp axes (refine/axis_zones.hpp)
   std::size_t subsegment_splits = 0;
   std::size_t refused = 0;
   std::size_t vertex_cap = 0;

@@ -1,0 +1,105 @@
+// Rotation copies around sharp axes; see refine/axis_zones.hpp.
+#include "refine/axis_zones.hpp"
+
+#include <cmath>
+
+#include "surface/chart.hpp"
+
+namespace pdr::refine {
+namespace {
+
+double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Point sub(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+// x without its component along unit u, normalized; {0,0,0} when x is along u.
+Point perpendicular(const Point& x, const Point& u) {
+  const double t = dot(x, u);
+  Point w{x[0] - t * u[0], x[1] - t * u[1], x[2] - t * u[2]};
+  const double n = std::sqrt(dot(w, w));
+  if (n == 0) return {0, 0, 0};
+  for (double& c : w) c /= n;
+  return w;
+}
+
+}  // namespace
+
+AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& cylinders,
+                     double cap) {
+  for (std::uint32_t s = 0; s < cylinders.size() && s < m.segments.size(); ++s) {
+    if (!(cylinders[s] > 0)) continue;
+    const surface::SurfaceSegment& seg = m.segments[s];
+    Zone z;
+    z.segment = s;
+    z.a = m.point(seg.a);
+    const Point d = sub(m.point(seg.b), z.a);
+    z.length = std::sqrt(dot(d, d));
+    if (z.length == 0) continue;
+    z.u = {d[0] / z.length, d[1] / z.length, d[2] / z.length};
+    z.radius = std::min(cylinders[s], cap);
+    if (!(z.radius > 0)) continue;
+    // The sides of the facets along the first subsegment of the axis.
+    const std::vector<std::uint32_t> chain = m.chain(s);
+    if (chain.size() < 2) continue;
+    for (const std::uint32_t f : seg.facets) {
+      if (!m.facets[f].is_face) continue;
+      for (const std::uint32_t t : m.subfacets_on_edge(f, chain[0], chain[1])) {
+        const surface::Subfacet& x = m.subfacet(t);
+        for (const std::uint32_t v : x.v) {
+          if (v == chain[0] || v == chain[1]) continue;
+          const Point e = perpendicular(sub(m.point(v), z.a), z.u);
+          if (dot(e, e) > 0) z.walls.push_back({f, e});
+        }
+      }
+    }
+    if (z.walls.size() < 2) continue;
+    zones_.push_back(std::move(z));
+  }
+  if (zones_.empty()) return;
+  facet_zones_.assign(m.facets.size(), {});
+  for (std::uint32_t i = 0; i < zones_.size(); ++i)
+    for (const Wall& w : zones_[i].walls)
+      if (facet_zones_[w.facet].empty() || facet_zones_[w.facet].back() != i)
+        facet_zones_[w.facet].push_back(i);
+}
+
+AxisZones::Placed AxisZones::place(const surface::SurfaceMesh& m, std::uint32_t f,
+                                   const Point& p) const {
+  Placed out;
+  out.own = p;
+  if (f >= facet_zones_.size()) return out;
+  for (const std::uint32_t i : facet_zones_[f]) {
+    const Zone& z = zones_[i];
+    const Point x = sub(p, z.a);
+    double along = dot(x, z.u);
+    if (!(along > 0 && along < z.length)) continue;
+    const Point w{x[0] - along * z.u[0], x[1] - along * z.u[1], x[2] - along * z.u[2]};
+    double r = std::sqrt(dot(w, w));
+    if (!(r > 0 && r < z.radius)) continue;
+    const double grid = std::ldexp(1.0, std::ilogb(z.radius) - kGridBits);
+    along = std::nearbyint(along / grid) * grid;
+    r = std::nearbyint(r / grid) * grid;
+    if (!(along > 0 && along < z.length && r > 0)) continue;
+    // p's own wall: the side of f whose direction is closest to p's.
+    const Wall* own = nullptr;
+    double best = -2;
+    for (const Wall& wall : z.walls)
+      if (wall.facet == f && dot(wall.e, w) > best) {
+        best = dot(wall.e, w);
+        own = &wall;
+      }
+    for (const Wall& wall : z.walls) {
+      Point q;
+      for (int k = 0; k < 3; ++k) q[k] = z.a[k] + along * z.u[k] + r * wall.e[k];
+      q = surface::place_on_facet(m.facets[wall.facet].chart, q);
+      if (&wall == own)
+        out.own = q;
+      else
+        out.copies.push_back({wall.facet, q, z.segment});
+    }
+    return out;
+  }
+  return out;
+}
+
+}  // namespace pdr::refine

@@ -1,0 +1,185 @@
+// Rotation copies around sharp axes (refine/axis_zones.hpp) and the facet locator they use
+// (surface/locate.hpp): on rotated walled star prisms (walls from the rim to the axis at
+// dihedrals down to a few degrees), a point of a wall near the axis gets one copy per other
+// wall, at its distances along and from the axis, on that wall's plane; the grid makes the
+// copies of a copy the very same doubles (what keeps a mirrored circumcenter from landing
+// ulps from a copy); points outside the zone get none. The locator finds the subfacet
+// holding a point, from any vertex of the facet, and nothing outside the facet.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <algorithm>
+#include <vector>
+
+#include "domain/analysis.hpp"
+#include "geom/predicates.hpp"
+#include "refine/axis_zones.hpp"
+#include "refine/split.hpp"
+#include "support/outside_fixtures.hpp"
+#include "surface/init.hpp"
+#include "surface/locate.hpp"
+
+namespace pdr::refine {
+using namespace pdr::test;
+using namespace pdr::surface;
+namespace {
+
+double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Point sub(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+// Distances of p along the segment a->b (from a) and from its line.
+std::pair<double, double> axial(const Point& a, const Point& b, const Point& p) {
+  const Point d = sub(b, a);
+  const double l = std::sqrt(dot(d, d));
+  const Point u{d[0] / l, d[1] / l, d[2] / l};
+  const Point x = sub(p, a);
+  const double along = dot(x, u);
+  return {along, std::sqrt(std::max(0.0, dot(x, x) - along * along))};
+}
+
+struct Star {
+  domain::DomainAnalysis an;
+  SurfaceMesh mesh;
+  std::vector<double> cylinders;
+  std::uint32_t axis = 0;  // the segment between the two centres
+};
+
+// A star prism of n corners, walls from the axis to `walls` corners, turned by (a, b, c).
+Star star(int n, const std::vector<std::uint32_t>& walls, double a, double b, double c) {
+  std::vector<P2d> profile;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n + (i % 2 ? 0.05 : 0);  // slightly uneven
+    const double r = i % 2 ? 0.6 : 1.0;
+    profile.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  Star s{domain::analyze(rotated(walled_prism(profile, walls, 0, 0.5), a, b, c)), {}, {}, 0};
+  s.mesh = init_surface(s.an).mesh;
+  s.cylinders = protecting_cylinders(s.an);
+  const auto centre = static_cast<std::uint32_t>(2 * n);
+  s.axis = *s.an.domain.find_segment(centre, centre + 1);
+  return s;
+}
+
+RC_GTEST_PROP(AxisZones, CopiesKeepDistancesAndLieOnTheirWalls, ()) {
+  {
+    const int n = *rc::gen::inRange(6, 12);
+    // Two walls at neighbouring corners (a sharp dihedral) and one across.
+    const auto w0 = *rc::gen::inRange<std::uint32_t>(0, static_cast<std::uint32_t>(n));
+    std::vector<std::uint32_t> walls{w0, (w0 + 1) % n, (w0 + n / 2) % n};
+    std::sort(walls.begin(), walls.end());
+    const double a = *rc::gen::inRange(0, 628) / 100.0, b = *rc::gen::inRange(0, 314) / 100.0,
+                 c = *rc::gen::inRange(0, 628) / 100.0;
+    const Star s = star(n, walls, a, b, c);
+    RC_PRE(s.axis < s.cylinders.size() && s.cylinders[s.axis] > 0);
+    const AxisZones zones(s.mesh, s.cylinders, std::numeric_limits<double>::infinity());
+    RC_ASSERT(!zones.empty());
+    const SurfaceSegment& seg = s.mesh.segments[s.axis];
+    const Point A = s.mesh.point(seg.a), B = s.mesh.point(seg.b);
+    const double radius = s.cylinders[s.axis];
+    const std::vector<std::uint32_t> chain = s.mesh.chain(s.axis);
+    for (const std::uint32_t f : seg.facets) {
+      const auto on = s.mesh.subfacets_on_edge(f, chain[0], chain[1]);
+      RC_ASSERT(!on.empty());
+      const Subfacet& t = s.mesh.subfacet(on.front());
+      Point apex{};
+      for (const std::uint32_t v : t.v)
+        if (v != chain[0] && v != chain[1]) apex = s.mesh.point(v);
+      // A point of f near the axis: between the first axis subsegment and the apex.
+      const double frac = *rc::gen::inRange(1, 99) / 100.0;
+      const Point m{(s.mesh.point(chain[0])[0] + s.mesh.point(chain[1])[0]) / 2,
+                    (s.mesh.point(chain[0])[1] + s.mesh.point(chain[1])[1]) / 2,
+                    (s.mesh.point(chain[0])[2] + s.mesh.point(chain[1])[2]) / 2};
+      Point p;
+      for (int k = 0; k < 3; ++k) p[k] = m[k] + frac * (apex[k] - m[k]);
+      p = place_on_facet(s.mesh.facets[f].chart, p);
+      const auto [along, r] = axial(A, B, p);
+      const AxisZones::Placed placed = zones.place(s.mesh, f, p);
+      if (!(r < radius * (1 - 1e-9))) continue;  // outside the zone (checked below)
+      RC_ASSERT(placed.copies.size() + 1 == seg.facets.size());
+      const auto [along0, r0] = axial(A, B, placed.own);
+      RC_ASSERT(std::abs(along0 - along) <= 1e-6 * radius);  // the grid moves it, barely
+      RC_ASSERT(std::abs(r0 - r) <= 1e-6 * radius);
+      for (const AxisZones::Copy& c : placed.copies) {
+        RC_ASSERT(c.facet != f);
+        RC_ASSERT(c.axis == s.axis);
+        const auto [along1, r1] = axial(A, B, c.p);
+        RC_ASSERT(std::abs(along1 - along0) <= 1e-12 * (1 + std::abs(along0)));
+        RC_ASSERT(std::abs(r1 - r0) <= 1e-12 * (1 + r0));
+        // On the copy's facet plane, within rounding of the placement.
+        const FacetChart& ch = s.mesh.facets[c.facet].chart;
+        Point nrm = ch.normal;
+        const double nl = std::sqrt(dot(nrm, nrm));
+        RC_ASSERT(std::abs(dot(sub(c.p, ch.origin), nrm)) / nl <= 1e-12);
+        // The copies of a copy are the same doubles, and its own place is itself.
+        const AxisZones::Placed again = zones.place(s.mesh, c.facet, c.p);
+        RC_ASSERT(again.own == c.p);
+        bool found_own = false;
+        for (const AxisZones::Copy& d : again.copies) found_own = found_own || d.p == placed.own;
+        RC_ASSERT(found_own);
+      }
+    }
+  }
+}
+
+TEST(AxisZones, NoCopiesOutsideTheZone) {
+  const Star s = star(8, {0, 1, 4}, 0.3, 0.7, 1.1);
+  ASSERT_GT(s.cylinders.at(s.axis), 0);
+  const AxisZones zones(s.mesh, s.cylinders, std::numeric_limits<double>::infinity());
+  const SurfaceSegment& seg = s.mesh.segments[s.axis];
+  const Point A = s.mesh.point(seg.a), B = s.mesh.point(seg.b);
+  int outside = 0;
+  for (const std::uint32_t f : seg.facets)
+    for (const std::uint32_t t : s.mesh.facet_subfacets(f))
+      for (const std::uint32_t v : s.mesh.subfacet(t).v) {
+        // Vertices of the walls outside the axis's cylinder, and points beside them: no
+        // copy from the axis's zone (a wall's rim edge may have a zone of its own).
+        const Point p = s.mesh.point(v);
+        const auto [along, r] = axial(A, B, p);
+        if (r < s.cylinders[s.axis] || along <= 0 || along >= 0.5) continue;
+        ++outside;
+        const Point q{p[0] * 0.999 + 1e-3, p[1], p[2]};
+        for (const Point& x : {p, q})
+          for (const AxisZones::Copy& c : zones.place(s.mesh, f, x).copies)
+            EXPECT_NE(c.axis, s.axis) << "vertex " << v;
+      }
+  EXPECT_GT(outside, 0);
+  // Zones cap at the element size: a zero cap leaves none.
+  const AxisZones none(s.mesh, s.cylinders, 0.0);
+  const Point m = s.mesh.point(s.mesh.chain(s.axis)[1]);
+  EXPECT_TRUE(none.empty());
+  EXPECT_TRUE(none.place(s.mesh, seg.facets.front(), m).copies.empty());
+}
+
+TEST(FacetLocate, FindsTheSubfacetHoldingAPoint) {
+  const Star s = star(9, {0, 1, 5}, 0.4, 1.3, 2.2);
+  const SurfaceSegment& axis = s.mesh.segments[s.axis];
+  for (std::uint32_t f = 0; f < s.mesh.facets.size(); ++f) {
+    if (!s.mesh.facets[f].is_face) continue;
+    // The walls are convex quads: the walk reaches every subfacet from any vertex. The
+    // caps are star sectors, not convex: the walk starts at the subfacet's own vertex.
+    const bool wall = std::count(axis.facets.begin(), axis.facets.end(), f) > 0;
+    const std::vector<std::uint32_t> tris = s.mesh.facet_subfacets(f);
+    for (const std::uint32_t t : tris) {
+      const Subfacet& x = s.mesh.subfacet(t);
+      const std::uint32_t from = wall ? s.mesh.subfacet(tris.back()).v[2] : x.v[0];
+      Point c{};
+      for (const std::uint32_t v : x.v)
+        for (int k = 0; k < 3; ++k) c[k] += s.mesh.point(v)[k] / 3;
+      const auto loc = locate_in_facet(s.mesh, f, c, from);
+      ASSERT_TRUE(loc.has_value()) << "facet " << f << " subfacet " << t;
+      EXPECT_EQ(loc->subfacet, t);
+      EXPECT_FALSE(loc->on_subsegment);
+      // Far beyond the facet: nothing.
+      Point far = c;
+      for (int k = 0; k < 3; ++k) far[k] += 100 * (c[k] - s.mesh.point(from)[k]) + 50;
+      far = place_on_facet(s.mesh.facets[f].chart, far);
+      EXPECT_FALSE(locate_in_facet(s.mesh, f, far, from).has_value());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pdr::refine
