@@ -27,10 +27,12 @@
 // refinement it causes stops at that size instead of going down to s. The copies are
 // inserted with Fig. 2's rule for facet vertices (one that encroaches a subsegment splits
 // it first) and are not held by the protected lengths (a repair is not).
-// Only conformity repairs get copies (refine/seq_refinement.cpp): they are what cascades;
-// the quality refinement's vertices are held by the cylinders' protected length, and copies
-// of them left tets unrefined along the sharp edges of the tee. Every facet vertex in a
-// zone goes to the zone's grid (place), copies or not.
+// Only conformity repairs below the protected length get copies (refine/seq_refinement.cpp):
+// they are what cascades. Every other vertex is held by the protected lengths, so what it
+// causes is bounded as any refinement above them, and copies of it only left tets next to
+// sharp edges unrefined (of every vertex: the tee of guard_test; of every repair: 2 tets
+// on the paper's tee at V = 0.008). Every facet vertex in a zone goes to the zone's grid
+// (place), copies or not.
 // The zone of s is its protecting cylinder (refine/split.hpp: radius kCylinderFraction times
 // the local feature size of s, capped by the element size), between its two ends. Floating
 // point says where the copies go (place_on_facet puts them on the facet's plane); exact

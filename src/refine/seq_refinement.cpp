@@ -207,7 +207,11 @@ class Refiner {
                  !why.empty()) {
         unsplit("volume.conformity: a repair " + why);  // a cascade of repairs
       } else {
-        refine_subfacet(n->e.id, kNoTet, kNoTet, /*below_floor=*/true, /*repair=*/true);
+        // Rotation copies only for repairs below the protected length: above it a repair
+        // is bounded like any refinement there, and copies there only leave tets next to
+        // the sharp edge unrefined (the paper's tee at V = 0.008: 2).
+        const bool deep = !guard_.refuse_subfacet(m_.surf, n->e.id).empty();
+        refine_subfacet(n->e.id, kNoTet, kNoTet, /*below_floor=*/true, /*copies=*/deep);
       }
       if (m_.dt.num_points() == before)
         ++res_.stats.conformity_refused;
@@ -469,10 +473,11 @@ class Refiner {
   }
 
   // Fig. 2 Refine(f) for a subfacet f, on behalf of tet t (kNoTet: f is encroached);
-  // `hint` locates its circumcenter. A conformity repair (`repair`) near a sharp axis is
-  // followed by the circumcenter's rotation copies (refine/axis_zones.hpp).
+  // `hint` locates its circumcenter. With `copies` (a conformity repair below the protected
+  // length) near a sharp axis, the circumcenter's rotation copies follow it
+  // (refine/axis_zones.hpp).
   void refine_subfacet(std::uint32_t f, TetId hint, TetId t, bool below_floor = false,
-                       bool repair = false) {
+                       bool copies = false) {
     if (std::string why = below_floor ? std::string() : guard_.refuse_subfacet(m_.surf, f);
         !why.empty()) {
       give_up(t, std::move(why));
@@ -492,7 +497,7 @@ class Refiner {
       if (placed.own != fc.p)
         fc = surface::build_facet_cavity(m_.surf, x.facet, placed.own, {f}, std::nullopt);
     }
-    if (insert_on_facet(fc, hint, t, below_floor, r2, what) != OnFacet::Inserted || !repair)
+    if (insert_on_facet(fc, hint, t, below_floor, r2, what) != OnFacet::Inserted || !copies)
       return;
     for (const AxisZones::Copy& c : placed.copies) insert_copy(c, r2);
   }
