@@ -22,6 +22,30 @@ Point perpendicular(const Point& x, const Point& u) {
   return w;
 }
 
+// Whether the side e of facet f along segment s holds the strip of the zone: every other
+// segment of f at an end of s, on that side, leaves the end at 90 degrees or more from s
+// (an acute one cuts the strip off near that end, as the third side of a triangle facet
+// does). The cosine is floating point with a margin of 1e-9: it chooses where copies go,
+// and classifies a right angle bent by rounding as right; it decides nothing about T.
+bool holds_strip(const surface::SurfaceMesh& m, std::uint32_t f, std::uint32_t s, const Point& e,
+                 const Point& u) {
+  const surface::SurfaceSegment& axis = m.segments[s];
+  for (const std::uint32_t o : m.facets[f].segments) {
+    if (o == s) continue;
+    const surface::SurfaceSegment& g = m.segments[o];
+    for (const auto& [end, sign] : {std::pair{axis.a, 1.0}, std::pair{axis.b, -1.0}}) {
+      if (g.a != end && g.b != end) continue;
+      Point d = sub(m.point(g.a == end ? g.b : g.a), m.point(end));
+      const double n = std::sqrt(dot(d, d));
+      if (n == 0) continue;
+      for (double& c : d) c /= n;
+      if (dot(d, e) <= 0) continue;  // on the facet's other side of s
+      if (sign * dot(d, u) > 1e-9) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& cylinders,
@@ -41,6 +65,7 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
     // The sides of the facets along the first subsegment of the axis.
     const std::vector<std::uint32_t> chain = m.chain(s);
     if (chain.size() < 2) continue;
+    bool strips = true;
     for (const std::uint32_t f : seg.facets) {
       if (!m.facets[f].is_face) continue;
       for (const std::uint32_t t : m.subfacets_on_edge(f, chain[0], chain[1])) {
@@ -49,10 +74,11 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
           if (v == chain[0] || v == chain[1]) continue;
           const Point e = perpendicular(sub(m.point(v), z.a), z.u);
           if (dot(e, e) > 0) z.walls.push_back({f, e});
+          strips = strips && holds_strip(m, f, s, e, z.u);
         }
       }
     }
-    if (z.walls.size() < 2) continue;
+    if (z.walls.size() < 2 || !strips) continue;
     zones_.push_back(std::move(z));
   }
   if (zones_.empty()) return;

@@ -19,6 +19,7 @@
 #include "refine/axis_zones.hpp"
 #include "refine/split.hpp"
 #include "support/outside_fixtures.hpp"
+#include "support/plc_fixtures.hpp"
 #include "surface/init.hpp"
 #include "surface/locate.hpp"
 
@@ -151,6 +152,21 @@ TEST(AxisZones, NoCopiesOutsideTheZone) {
   const Point m = s.mesh.point(s.mesh.chain(s.axis)[1]);
   EXPECT_TRUE(none.empty());
   EXPECT_TRUE(none.place(s.mesh, seg.facets.front(), m).copies.empty());
+}
+
+// A thin tet: its faces ABC and ABD meet along AB at about 3 degrees (a cylinder), but a
+// triangle wall cannot hold the strip along AB (its third sides leave A and B at acute
+// angles), so no copy could be kept on every wall: no zone.
+TEST(AxisZones, NoZoneAlongTriangleWalls) {
+  const Plc plc = make_plc({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, 1, 0.05}},
+                           {{{0, 1, 2}}, {{0, 1, 3}}, {{0, 2, 3}}, {{1, 2, 3}}});
+  const domain::DomainAnalysis an = domain::analyze(plc);
+  const SurfaceMesh mesh = init_surface(an).mesh;
+  const std::vector<double> cylinders = protecting_cylinders(an);
+  const auto ab = an.domain.find_segment(0, 1);
+  ASSERT_TRUE(ab.has_value());
+  ASSERT_GT(cylinders.at(*ab), 0);
+  EXPECT_TRUE(AxisZones(mesh, cylinders, std::numeric_limits<double>::infinity()).empty());
 }
 
 TEST(FacetLocate, FindsTheSubfacetHoldingAPoint) {
