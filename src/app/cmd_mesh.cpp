@@ -251,6 +251,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   summary.set("inserted", nlohmann::json{{"tet_circumcenters", rr.stats.tet_circumcenters},
                            {"subfacet_circumcenters", rr.stats.subfacet_circumcenters},
                            {"axis_copies", rr.stats.axis_copies},
+                           {"axis_copies_dropped", rr.stats.axis_copies_dropped},
                            {"subsegment_splits", rr.stats.subsegment_splits},
                            {"refused", rr.stats.refused},
                            {"vertex_cap", rr.stats.vertex_cap},

@@ -102,18 +102,20 @@ AxisZones::Placed AxisZones::place(const surface::SurfaceMesh& m, std::uint32_t 
     const Point w{x[0] - along * z.u[0], x[1] - along * z.u[1], x[2] - along * z.u[2]};
     double r = std::sqrt(dot(w, w));
     if (!(r > 0 && r < z.radius)) continue;
-    const double grid = std::ldexp(1.0, std::ilogb(z.radius) - kGridBits);
-    along = std::nearbyint(along / grid) * grid;
-    r = std::nearbyint(r / grid) * grid;
-    if (!(along > 0 && along < z.length && r > 0)) continue;
-    // p's own wall: the side of f whose direction is closest to p's.
+    // p's own wall: the side of f whose direction is closest to p's; none when p is not
+    // on a side of f along the axis (beyond the axis line).
     const Wall* own = nullptr;
-    double best = -2;
+    double best = 0;
     for (const Wall& wall : z.walls)
       if (wall.facet == f && dot(wall.e, w) > best) {
         best = dot(wall.e, w);
         own = &wall;
       }
+    if (own == nullptr) continue;
+    const double grid = std::ldexp(1.0, std::ilogb(z.radius) - kGridBits);
+    along = std::nearbyint(along / grid) * grid;
+    r = std::nearbyint(r / grid) * grid;
+    if (!(along > 0 && along < z.length && r > 0 && r < z.radius)) continue;
     for (const Wall& wall : z.walls) {
       Point q;
       for (int k = 0; k < 3; ++k) q[k] = z.a[k] + along * z.u[k] + r * wall.e[k];

@@ -427,7 +427,12 @@ class Refiner {
     queue_star();
     if (watch_encroachment_) find_encroached(m_, star_, enc_);
     step_.emplace_back(v, what);
-    if (step_.size() > 1) return;  // a repair's vertex
+    if (step_.size() > 1) return;  // a repair's vertex, or a rotation copy
+    if (!pending_copies_.empty() && pt(v) == pending_point_) {
+      const std::vector<AxisZones::Copy> copies = std::move(pending_copies_);
+      pending_copies_.clear();
+      for (const AxisZones::Copy& c : copies) insert_copy(c, pending_size2_);
+    }
     for (std::size_t i = 0; i < step_.size() && !at_cap();)
       if (!repair(i)) ++i;
     if (o_.audit)
@@ -488,19 +493,32 @@ class Refiner {
         m_.surf.point(x.v[0]), m_.surf.point(x.v[1]), m_.surf.point(x.v[2]));
     const std::string what = "circumcenter of subfacet " + std::to_string(f);
     surface::FacetCavity fc = plan_circumcenter(m_.surf, f);
-    AxisZones::Placed placed;
     // In a zone every facet vertex goes to the zone's grid, copies or not: a circumcenter
     // of a subfacet that mirrors another wall's (up to rounding) then lands on that wall's
-    // copy instead of ulps from it.
-    if (!zones_.empty() && fc.status != surface::CavityStatus::Encroaches) {
-      placed = zones_.place(m_.surf, x.facet, fc.p);
-      if (placed.own != fc.p)
-        fc = surface::build_facet_cavity(m_.surf, x.facet, placed.own, {f}, std::nullopt);
+    // copy instead of ulps from it. The snapped cavity is used only when it is as good.
+    if (!zones_.empty() && fc.status == surface::CavityStatus::Ok) {
+      AxisZones::Placed placed = zones_.place(m_.surf, x.facet, fc.p);
+      if (placed.own != fc.p) {
+        surface::FacetCavity snapped =
+            surface::build_facet_cavity(m_.surf, x.facet, placed.own, {f}, std::nullopt);
+        if (snapped.status == surface::CavityStatus::Ok) fc = std::move(snapped);
+      }
+      // The copies join this step (after_insert) before its repairs look at the star.
+      if (copies && fc.p == placed.own) {
+        pending_copies_ = std::move(placed.copies);
+        pending_point_ = fc.p;
+        pending_size2_ = r2;
+      }
     }
-    if (insert_on_facet(fc, hint, t, below_floor, r2, what) != OnFacet::Inserted || !copies)
-      return;
-    for (const AxisZones::Copy& c : placed.copies) insert_copy(c, r2);
+    insert_on_facet(fc, hint, t, below_floor, r2, what);
+    pending_copies_.clear();  // not inserted: no copies
   }
+
+  // Rotation copies waiting for their point's step (refine_subfacet, after_insert): the
+  // point may still give way to a subsegment split, whose step must not take them.
+  std::vector<AxisZones::Copy> pending_copies_;
+  Point pending_point_{};
+  double pending_size2_ = 0;
 
   enum class OnFacet { Inserted, SplitInstead, Failed };
 
@@ -531,7 +549,7 @@ class Refiner {
     const std::uint32_t sv = m_.surf.add_vertex(fc.p, {HomeKind::Facet, fc.facet});
     commit_facet_cavity(m_.surf, fc, sv);
     const VertexId v = insert(cav2_, sv);
-    ++res_.stats.subfacet_circumcenters;
+    ++(quiet ? res_.stats.axis_copies : res_.stats.subfacet_circumcenters);
     after_insert(v, "subfacet", size2);
     return OnFacet::Inserted;
   }
@@ -555,15 +573,16 @@ class Refiner {
         }
       }
       const auto loc = surface::locate_in_facet(m_.surf, c.facet, c.p, from);
-      if (!loc || loc->on_subsegment) return;
+      if (!loc || loc->on_subsegment) break;
       const surface::FacetCavity fc =
           surface::build_facet_cavity(m_.surf, c.facet, c.p, {loc->subfacet}, std::nullopt);
       const TetId hint = m_.dt.last_tet();
       const OnFacet r = insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, size2,
                                         "rotation copy", /*quiet=*/true);
-      if (r == OnFacet::Inserted) ++res_.stats.axis_copies;
-      if (r != OnFacet::SplitInstead) return;
+      if (r == OnFacet::Inserted) return;
+      if (r != OnFacet::SplitInstead) break;
     }
+    ++res_.stats.axis_copies_dropped;
   }
 
   // An element of `holder` (a tet of p's cavity) that p encroaches, refined on behalf of t.

@@ -129,6 +129,7 @@ struct RefineStats {
   std::size_t tet_circumcenters = 0;
   std::size_t subfacet_circumcenters = 0;
   std::size_t axis_copies = 0;  // rotation copies near sharp axes (refine/axis_zones.hpp)
+  std::size_t axis_copies_dropped = 0;  // copies outside their facet, on a vertex, refused
   std::size_t subsegment_splits = 0;
   std::size_t refused = 0;
   std::size_t vertex_cap = 0;

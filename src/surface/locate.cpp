@@ -5,8 +5,8 @@ namespace pdr::surface {
 namespace {
 
 // Where q lies relative to live subfacet t of chart ch: the index of an edge with q
-// strictly beyond it (-1: none, q is in the closed triangle), and whether q is on a
-// constrained edge.
+// strictly beyond it, one with a subfacet across it first (-1: none, q is in the closed
+// triangle), and whether q is on a constrained edge.
 int beyond_edge(const SurfaceMesh& m, const FacetChart& ch, const Subfacet& t, const Point& q,
                 bool& on_constrained) {
   on_constrained = false;
@@ -14,12 +14,19 @@ int beyond_edge(const SurfaceMesh& m, const FacetChart& ch, const Subfacet& t, c
   for (int i = 0; i < 3; ++i) {
     const Sign s = chart_orient(ch, m.point(t.v[(i + 1) % 3]), m.point(t.v[(i + 2) % 3]), q);
     if (s == Sign::Negative) {
-      if (beyond < 0) beyond = i;
+      if (beyond < 0 || (t.nbr[beyond] < 0 && t.nbr[i] >= 0)) beyond = i;
     } else if (s == Sign::Zero && t.constrained[i]) {
       on_constrained = true;
     }
   }
   return beyond;
+}
+
+std::optional<FacetLocation> scan(const SurfaceMesh& m, std::uint32_t f, const Point& q) {
+  bool on = false;
+  for (const std::uint32_t t : m.facet_subfacets(f))
+    if (beyond_edge(m, m.facets[f].chart, m.subfacet(t), q, on) < 0) return FacetLocation{t, on};
+  return std::nullopt;
 }
 
 }  // namespace
@@ -40,13 +47,11 @@ std::optional<FacetLocation> locate_in_facet(const SurfaceMesh& m, std::uint32_t
     const Subfacet& t = m.subfacet(static_cast<std::uint32_t>(cur));
     const int e = beyond_edge(m, ch, t, q, on);
     if (e < 0) return FacetLocation{static_cast<std::uint32_t>(cur), on};
-    if (t.nbr[e] < 0) return std::nullopt;  // beyond the facet's boundary
+    if (t.nbr[e] < 0) break;  // beyond the facet's boundary here: outside, or not convex
     cur = t.nbr[e];
   }
-  // The walk cycled: test every subfacet of f.
-  for (const std::uint32_t t : m.facet_subfacets(f))
-    if (beyond_edge(m, ch, m.subfacet(t), q, on) < 0) return FacetLocation{t, on};
-  return std::nullopt;
+  // The walk left the facet or cycled: test every subfacet of f.
+  return scan(m, f, q);
 }
 
 }  // namespace pdr::surface

@@ -1,15 +1,14 @@
 // Point location in one facet's triangulation (used by the rotation copies around sharp
 // axes, refine/axis_zones.hpp): which subfacet of facet f holds a point near its plane.
 //
-// locate_in_facet walks from the subfacets of f at vertex `from` across the edge whose
-// line separates the current subfacet from q in the facet's chart (chart_orient, exact on
-// the projected doubles: surface/chart.hpp), a visibility walk. It ends at a subfacet whose
-// closed chart triangle holds q, or at an edge with no subfacet of f across it: q lies
-// outside the facet's region there, or the facet is not convex between `from` and q (the
-// caller starts next to q). The chart triangulation is a regular triangulation
-// (lifted by the plane-centred in-circle test), on which a visibility walk can cycle in
-// principle: after as many steps as f has subfacets, every subfacet of f is tested instead.
-// Decisions are exact; only q, a constructed point, is rounded.
+// locate_in_facet walks from the subfacets of f at vertex `from` across an edge whose line
+// separates the current subfacet from q in the facet's chart (chart_orient, exact on the
+// projected doubles: surface/chart.hpp), preferring an edge with a subfacet of f across it:
+// a visibility walk. It ends at a subfacet whose closed chart triangle holds q. When it
+// reaches the facet's boundary with q beyond it (q outside, or the facet not convex
+// between `from` and q), or cycles (the chart triangulation is a regular triangulation,
+// on which a visibility walk can cycle in principle), every subfacet of f is tested
+// instead. Decisions are exact; only q, a constructed point, is rounded.
 #pragma once
 
 #include <cstdint>

@@ -88,17 +88,19 @@ RC_GTEST_PROP(AxisZones, CopiesKeepDistancesAndLieOnTheirWalls, ()) {
       Point apex{};
       for (const std::uint32_t v : t.v)
         if (v != chain[0] && v != chain[1]) apex = s.mesh.point(v);
-      // A point of f near the axis: between the first axis subsegment and the apex.
+      // A point of f in the zone: from the first axis subsegment's midpoint towards the
+      // apex, at most a fraction of the radius away (so closer than that to the axis).
       const double frac = *rc::gen::inRange(1, 99) / 100.0;
       const Point m{(s.mesh.point(chain[0])[0] + s.mesh.point(chain[1])[0]) / 2,
                     (s.mesh.point(chain[0])[1] + s.mesh.point(chain[1])[1]) / 2,
                     (s.mesh.point(chain[0])[2] + s.mesh.point(chain[1])[2]) / 2};
+      const double to_apex = std::sqrt(dot(sub(apex, m), sub(apex, m)));
       Point p;
-      for (int k = 0; k < 3; ++k) p[k] = m[k] + frac * (apex[k] - m[k]);
+      for (int k = 0; k < 3; ++k) p[k] = m[k] + frac * radius * (apex[k] - m[k]) / to_apex;
       p = place_on_facet(s.mesh.facets[f].chart, p);
       const auto [along, r] = axial(A, B, p);
+      RC_ASSERT(r < radius);
       const AxisZones::Placed placed = zones.place(s.mesh, f, p);
-      if (!(r < radius * (1 - 1e-9))) continue;  // outside the zone (checked below)
       RC_ASSERT(placed.copies.size() + 1 == seg.facets.size());
       const auto [along0, r0] = axial(A, B, placed.own);
       RC_ASSERT(std::abs(along0 - along) <= 1e-6 * radius);  // the grid moves it, barely
@@ -114,6 +116,10 @@ RC_GTEST_PROP(AxisZones, CopiesKeepDistancesAndLieOnTheirWalls, ()) {
         Point nrm = ch.normal;
         const double nl = std::sqrt(dot(nrm, nrm));
         RC_ASSERT(std::abs(dot(sub(c.p, ch.origin), nrm)) / nl <= 1e-12);
+        // Inside its facet (every wall holds the strip along the axis).
+        const auto loc = locate_in_facet(s.mesh, c.facet, c.p, chain[1]);
+        RC_ASSERT(loc.has_value());
+        RC_ASSERT(!loc->on_subsegment);
         // The copies of a copy are the same doubles, and its own place is itself.
         const AxisZones::Placed again = zones.place(s.mesh, c.facet, c.p);
         RC_ASSERT(again.own == c.p);
@@ -148,10 +154,7 @@ TEST(AxisZones, NoCopiesOutsideTheZone) {
       }
   EXPECT_GT(outside, 0);
   // Zones cap at the element size: a zero cap leaves none.
-  const AxisZones none(s.mesh, s.cylinders, 0.0);
-  const Point m = s.mesh.point(s.mesh.chain(s.axis)[1]);
-  EXPECT_TRUE(none.empty());
-  EXPECT_TRUE(none.place(s.mesh, seg.facets.front(), m).copies.empty());
+  EXPECT_TRUE(AxisZones(s.mesh, s.cylinders, 0.0).empty());
 }
 
 // A thin tet: its faces ABC and ABD meet along AB at about 3 degrees (a cylinder), but a
