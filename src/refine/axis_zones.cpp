@@ -3,14 +3,15 @@
 
 #include <cmath>
 
+#include "geom/filter_kit.hpp"
+
 #include "surface/chart.hpp"
 
 namespace pdr::refine {
 namespace {
 
-double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-Point sub(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+using filter::dot;
+using filter::sub;
 
 // x without its component along unit u, normalized; {0,0,0} when x is along u.
 Point perpendicular(const Point& x, const Point& u) {

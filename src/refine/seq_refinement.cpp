@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "delaunay/conflict.hpp"
+#include "domain/distance.hpp"
 #include "geom/construct.hpp"
 #include "geom/predicates.hpp"
 #include "geom/point_text.hpp"
@@ -491,7 +492,6 @@ class Refiner {
     const Subfacet& x = m_.surf.subfacet(f);
     const double r2 = construct::triangle_circumradius2(
         m_.surf.point(x.v[0]), m_.surf.point(x.v[1]), m_.surf.point(x.v[2]));
-    const std::string what = "circumcenter of subfacet " + std::to_string(f);
     surface::FacetCavity fc = plan_circumcenter(m_.surf, f);
     // In a zone every facet vertex goes to the zone's grid, copies or not: a circumcenter
     // of a subfacet that mirrors another wall's (up to rounding) then lands on that wall's
@@ -510,7 +510,7 @@ class Refiner {
         pending_size2_ = r2;
       }
     }
-    insert_on_facet(fc, hint, t, below_floor, r2, what);
+    insert_on_facet(fc, hint, t, below_floor, r2, f);
     pending_copies_.clear();  // not inserted: no copies
   }
 
@@ -523,10 +523,13 @@ class Refiner {
   enum class OnFacet { Inserted, SplitInstead, Failed };
 
   // Inserts the point of facet cavity fc (Fig. 2's Refine(f) once the point is chosen), or
-  // splits the subsegment it encroaches; a failure is given up on t's behalf unless
-  // `quiet` (a rotation copy). `size2`: the squared size of the element refined.
+  // splits the subsegment it encroaches. `of`: the subfacet whose circumcenter it is, a
+  // failure given up on t's behalf; kNone: a rotation copy, whose failure is only counted
+  // by the caller. `size2`: the squared size of the element refined.
   OnFacet insert_on_facet(const surface::FacetCavity& fc, TetId hint, TetId t, bool below_floor,
-                          double size2, const std::string& what, bool quiet = false) {
+                          double size2, std::uint32_t of) {
+    const bool quiet = of == kNone;
+    const auto what = [&] { return "circumcenter of subfacet " + std::to_string(of); };
     const auto fail = [&](std::string why) {
       if (!quiet) give_up(t, std::move(why));
       return OnFacet::Failed;
@@ -538,11 +541,11 @@ class Refiner {
     if (fc.status == surface::CavityStatus::Encroaches && !fc.encroached.empty())
       return split_instead(fc.encroached.front());
     if (fc.status != surface::CavityStatus::Ok)
-      return fail("refine.subfacet: the " + what + " of " + m_.surf.facet_name(fc.facet) +
+      return fail("refine.subfacet: the " + what() + " of " + m_.surf.facet_name(fc.facet) +
                   " cannot be inserted (" + cavity_status_name(fc.status) + ")");
     bool outside = false;
     if (!plan(fc.p, hint, cav2_, outside))
-      return fail("refine.subfacet: " + what + " " + point_text(fc.p) + " is already a vertex");
+      return fail("refine.subfacet: " + what() + " " + point_text(fc.p) + " is already a vertex");
     if (const auto s = closure_encroached_subsegment(m_, {cav2_.conflict, cav2_.ring}, fc.p))
       return split_instead(*s);
     res_.stats.h = std::min(res_.stats.h, std::sqrt(size2 / 2));
@@ -559,26 +562,21 @@ class Refiner {
   // as a repair), then the copy is tried again. Nothing is reported when it cannot go in
   // (outside its facet, on a vertex): the refinement goes on without it.
   void insert_copy(const AxisZones::Copy& c, double size2) {
-    for (int attempt = 0; attempt < 4 && !at_cap(); ++attempt) {
-      // Start the walk at the axis vertex nearest the copy.
-      const std::vector<std::uint32_t> chain = m_.surf.chain(c.axis);
-      std::uint32_t from = chain.front();
-      double best = std::numeric_limits<double>::infinity();
-      for (const std::uint32_t v : chain) {
-        double d2 = 0;
-        for (int k = 0; k < 3; ++k) d2 += (m_.surf.point(v)[k] - c.p[k]) * (m_.surf.point(v)[k] - c.p[k]);
-        if (d2 < best) {
-          best = d2;
-          from = v;
-        }
+    // The walk starts at the axis vertex nearest the copy (it stays one after splits).
+    std::uint32_t from = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (const std::uint32_t v : m_.surf.chain(c.axis))
+      if (const double d2 = domain::dist2_point_point(m_.surf.point(v), c.p); d2 < best) {
+        best = d2;
+        from = v;
       }
+    for (int attempt = 0; attempt < 4 && !at_cap(); ++attempt) {
       const auto loc = surface::locate_in_facet(m_.surf, c.facet, c.p, from);
       if (!loc || loc->on_subsegment) break;
       const surface::FacetCavity fc =
           surface::build_facet_cavity(m_.surf, c.facet, c.p, {loc->subfacet}, std::nullopt);
       const TetId hint = m_.dt.last_tet();
-      const OnFacet r = insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, size2,
-                                        "rotation copy", /*quiet=*/true);
+      const OnFacet r = insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, size2, kNone);
       if (r == OnFacet::Inserted) return;
       if (r != OnFacet::SplitInstead) break;
     }

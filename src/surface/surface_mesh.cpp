@@ -2,6 +2,7 @@
 #include "surface/surface_mesh.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "geom/construct.hpp"
 
@@ -41,9 +42,14 @@ std::optional<std::uint32_t> SurfaceMesh::find_subsegment(std::uint32_t u, std::
 
 std::optional<std::uint32_t> SurfaceMesh::find_subfacet(std::uint32_t a, std::uint32_t b,
                                                          std::uint32_t c) const {
-  // Every subfacet listed at a contains a; one with edge {b, c} is {a, b, c}.
+  if (a == b || a == c || b == c) return std::nullopt;
+  // Every subfacet listed at a vertex contains it; one with the edge of the other two is
+  // the face. The shortest of the three lists is scanned: a vertex at a sharp edge can hold
+  // thousands of subfacets (a 1.2-degree fin of triangles spent 30% of its run here).
+  if (vtris_[b].size() < vtris_[a].size()) std::swap(a, b);
+  if (vtris_[c].size() < vtris_[a].size()) std::swap(a, c);
   for (const std::uint32_t t : vtris_[a])
-    if (a != b && a != c && edge_index(subfacets_[t], b, c) >= 0) return t;
+    if (edge_index(subfacets_[t], b, c) >= 0) return t;
   return std::nullopt;
 }
 
