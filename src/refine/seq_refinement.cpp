@@ -188,8 +188,37 @@ class Refiner {
   // them: a bound, not what ends a cascade of repairs (at dihedrals below 70.53 degrees
   // around one axis the repairs of two facets took each other's subfacets out of T in turn,
   // each level half the size of the last; the rotation copies of refine/axis_zones.hpp end
-  // that). What is still missing at the floor is listed (exit 3, NOT CONFORMING).
-  static constexpr double kRepairFloor = 0x1p-10;
+  // that). What is still missing at the floor is listed (exit 3, NOT CONFORMING). Repairs
+  // that end by themselves can go deep: a scanned surface with cap triangles folded onto
+  // their neighbours at 1 to 3 degrees needed 2^-11.5 of its protected length (2^-10 left
+  // it NOT CONFORMING), so the floor leaves 12 more levels of halving than that.
+  static constexpr double kRepairFloor = 0x1p-24;
+  // ...and never below what doubles can place: a circumcenter of a subfacet of circumradius
+  // r among coordinates of magnitude X is computed with an error of a few ulps of X, so r
+  // must keep about 2^-40 of X (12 bits of the 52 left for the position within r).
+  static constexpr double kPrecisionFloor = 0x1p-40;
+
+  // Why a repair of subfacet f may not go in: below the repair floor, or below what doubles
+  // can place; empty when it may.
+  std::string refuse_repair(std::uint32_t f) const {
+    if (std::string why = guard_.refuse_subfacet(m_.surf, f, kRepairFloor); !why.empty())
+      return why;
+    const surface::Subfacet& x = m_.surf.subfacet(f);
+    const Point &a = m_.surf.point(x.v[0]), &b = m_.surf.point(x.v[1]),
+                &c = m_.surf.point(x.v[2]);
+    double mag = 0;
+    for (const Point* p : {&a, &b, &c})
+      for (int k = 0; k < 3; ++k) mag = std::max(mag, std::abs((*p)[k]));
+    const double r = std::sqrt(construct::triangle_circumradius2(a, b, c));
+    if (r >= kPrecisionFloor * mag) return {};
+    std::ostringstream os;
+    os.precision(6);
+    os << "refine.precision: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2]
+       << ") of " << m_.surf.facet_name(x.facet) << " has circumradius " << r
+       << ", below 2^-40 of its coordinates' magnitude " << mag
+       << ": its circumcenter cannot be placed in doubles";
+    return os.str();
+  }
 
   // Conformity first (refine/conformity.hpp): refines the next element of D missing from T
   // (Refine(s), then Refine(f)); once none is, recomputes the flags of the tets made
@@ -204,8 +233,7 @@ class Refiner {
       const std::size_t before = m_.dt.num_points();
       if (n->subsegment) {
         if (auto why = split(n->e.id, kNoTet, /*below_floor=*/true)) unsplit(std::move(*why));
-      } else if (std::string why = guard_.refuse_subfacet(m_.surf, n->e.id, kRepairFloor);
-                 !why.empty()) {
+      } else if (std::string why = refuse_repair(n->e.id); !why.empty()) {
         unsplit("volume.conformity: a repair " + why);  // a cascade of repairs
       } else {
         // Rotation copies only for repairs below the protected length: above it a repair
