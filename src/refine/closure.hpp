@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 
+#include "delaunay/cavity.hpp"
 #include "refine/volume_mesh.hpp"
 
 namespace pdr::refine {
@@ -24,5 +25,28 @@ std::optional<std::uint32_t> closure_encroached_subsegment(const VolumeMesh& m,
 // exactly (geom/encroach.hpp); equal radii: the smaller sorted vertex coordinates.
 std::optional<std::uint32_t> closure_encroached_subfacet(const VolumeMesh& m,
                                                          ClosureTets tets, const Point& p);
+
+// Outside the theory: the first element of D, in the order of p's cavity (its conflict
+// tets from p's own tet outwards, then its ring), that p encroaches (closed balls, as
+// above) or that committing the cavity would take out of T (a subfacet between two
+// conflict tets, a subsegment on no boundary face: refine/conformity.hpp doomed_elements).
+// One pass that stops at the first: a skinny tet next to a sharp fold has its circumcenter
+// far off and a cavity of thousands of tets, and the element found is most often one the
+// guards refuse, so the rest of the scan was wasted. Fig. 2's order (every encroached
+// subsegment before the largest encroached subfacet, then the doomed ones) needs the
+// whole closure and stays with the admissible domains.
+class ClosureScan {
+ public:
+  struct Hit {
+    bool subsegment = false;  // else a subfacet
+    bool encroached = false;  // else doomed
+    std::uint32_t id = 0;
+  };
+  std::optional<Hit> first(const VolumeMesh& m, const Cavity& c, const Point& p);
+
+ private:
+  std::vector<std::uint32_t> stamp_;  // per tet slot: == gen_ for the conflict tets
+  std::uint32_t gen_ = 0;
+};
 
 }  // namespace pdr::refine

@@ -142,6 +142,7 @@ class Refiner {
   WorkQueue queue_;
   std::uint64_t steps_ = 0;
   Cavity cav_, cav2_;
+  ClosureScan scan_;  // outside the theory: refine_tet's one-pass closure test
   std::vector<TetId> star_;
   // The vertices of the current insertion step (after_insert), each with what it refined;
   // a star of one of them.
@@ -678,16 +679,25 @@ class Refiner {
       refuse(t, "refine.tet: circumcenter " + point_text(p) + " is already a vertex");
       return;
     }
-    if (const auto s = closure_encroached_subsegment(m_, {cav_.conflict, cav_.ring}, p)) {
+    if (guard_.active()) {
+      // Outside the theory: the first element of D in the cavity's order that p
+      // encroaches or the cavity would take out of T (refine/closure.hpp ClosureScan).
+      if (const auto hit = scan_.first(m_, cav_, p)) {
+        if (!hit->subsegment)
+          refine_subfacet(hit->id, t, t);
+        else if (auto why = split(hit->id, t))
+          refuse(t, std::move(*why));
+        return;
+      }
+    } else if (const auto s = closure_encroached_subsegment(m_, {cav_.conflict, cav_.ring}, p)) {
       if (auto why = split(*s, t)) refuse(t, std::move(*why));
       return;
-    }
-    if (const auto f = closure_encroached_subfacet(m_, {cav_.conflict, cav_.ring}, p)) {
+    } else if (const auto f = closure_encroached_subfacet(m_, {cav_.conflict, cav_.ring}, p)) {
       refine_subfacet(*f, t, t);
       return;
     }
     // An element of D the cavity would take out of T is refined first, as if p encroached
-    // it (refine/conformity.hpp).
+    // it (refine/conformity.hpp); outside the theory the scan above found none.
     const EncroachedLists& doomed = conformity_.doomed(m_, cav_);
     if (!doomed.subsegments.empty()) {
       if (auto why = split(doomed.subsegments.front().id, t)) refuse(t, std::move(*why));

@@ -151,6 +151,33 @@ rc::Gen<Plc> gen_outside_domain(double min_corner_deg) {
   });
 }
 
+Plc tucked_flap(double cx, double vx, double off, double h) {
+  const std::vector<Point> p{{-1, -1, 0}, {2, -1, 0}, {2, 1.5, 0}, {-1, 1.5, 0},
+                             {-1, -1, -1}, {2, -1, -1}, {2, 1.5, -1}, {-1, 1.5, -1},
+                             {0, 0, 0}, {1, 0, 0}, {cx, 0.5, 0}, {vx, -off, h}};
+  constexpr std::uint32_t a = 8, b = 9, c = 10, v = 11;
+  return make_plc(p, {{{0, 1, b, a}}, {{1, 2, c, b}}, {{2, 3, c}}, {{3, 0, a, c}},  // top
+                      {{4, 7, 6, 5}}, {{0, 4, 5, 1}}, {{1, 5, 6, 2}}, {{2, 6, 7, 3}},
+                      {{3, 7, 4, 0}},                                     // bottom, sides
+                      {{a, b, v}}, {{b, c, v}}, {{c, a, v}}});            // flap, covers
+}
+
+rc::Gen<Plc> gen_tucked_flap() {
+  return rc::gen::exec([] {
+    const double cx = 0.3 + *rc::gen::inRange(0, 41) / 100.0;
+    const double vx = 0.2 + *rc::gen::inRange(0, 61) / 100.0;
+    const double off = 0.02 + *rc::gen::inRange(0, 19) / 100.0;
+    const double fold = (0.8 + *rc::gen::inRange(0, 23) / 10.0) * std::numbers::pi / 180;
+    Plc plc = tucked_flap(cx, vx, off, off * std::tan(fold));
+    if (*rc::gen::inRange(0, 2) == 1) {
+      const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
+      const double x = angle(), y = angle(), z = angle();
+      plc = rotated(std::move(plc), x, y, z);
+    }
+    return plc;
+  });
+}
+
 Plc torus_of_triangles(int n, int m, double r) {
   constexpr double kRing = 3;
   std::vector<Point> p;

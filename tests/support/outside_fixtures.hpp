@@ -45,6 +45,17 @@ Plc walled_prism(const std::vector<P2d>& profile, const std::vector<std::uint32_
 
 rc::Gen<Plc> gen_outside_domain(double min_corner_deg);
 
+// A box [-1,2] x [-1,1.5] x [-1,0] whose top has a triangular hole abc (a = (0,0,0),
+// b = (1,0,0), c = (cx,0.5,0)) covered by a flap (a, b, v) folded back onto the top across
+// ab, v = (vx,-off,h) just above it, and two covers (b, c, v), (c, a, v): the flap meets
+// the top at atan(h / off) and the covers meet the flap at about as little. Scanned
+// surfaces have such folds where a cap triangle lies upside down on its neighbours (the
+// repairs of the subfacets there went below the old repair floor, NOT CONFORMING). The
+// top is four facets around the hole, so every segment has two facets.
+Plc tucked_flap(double cx, double vx, double off, double h);
+// Such flaps, folds of 0.8 to 3 degrees, turned by a random rotation or not.
+rc::Gen<Plc> gen_tucked_flap();
+
 // A torus of n x m planar quads (ring radius 3, tube radius r), each quad given as two
 // triangle facets, as a triangulated surface from a CAD or scanning tool writes it: facets
 // across each diagonal are coplanar (exactly before a rotation, within rounding after),
