@@ -8,8 +8,9 @@
 
 namespace pdr {
 
-void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const Point& p,
-                          TetId seed, Cavity& out) {
+template <class StopFn>
+bool CavityBuilder::grow(const TetStore& s, std::span<const Point> pts, const Point& p,
+                         TetId seed, Cavity& out, const StopFn& stop) {
   out.clear();
   out.point = p;
   out.seed = seed;
@@ -21,12 +22,13 @@ void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const P
   assert(in_conflict(s, pts, seed, p));
   mark_[seed] = Mark::Inside;
   out.conflict.push_back(seed);
+  bool stopped = stop(kNoTet, -1, seed);
   // out.conflict doubles as the BFS queue: entries before i have been expanded.
   // Prefetching: a tet's four neighbours are requested from memory as soon as the tet
   // joins C_p, well before the search reads them (their loads would otherwise wait behind
   // the mispredicted branches of the conflict tests).
   for (int f = 0; f < 4; ++f) s.prefetch(s.neighbour(seed, f));
-  for (std::size_t i = 0; i < out.conflict.size(); ++i) {
+  for (std::size_t i = 0; i < out.conflict.size() && !stopped; ++i) {
     const TetId t = out.conflict[i];
     // Request the points of the neighbours still to be tested before testing any.
     for (int f = 0; f < 4; ++f) {
@@ -44,6 +46,10 @@ void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const P
           mark_[u] = Mark::Inside;
           out.conflict.push_back(u);
           for (int g = 0; g < 4; ++g) s.prefetch(s.neighbour(u, g));
+          if (stop(t, f, u)) {
+            stopped = true;
+            break;
+          }
           continue;
         }
         mark_[u] = Mark::Outside;
@@ -54,6 +60,17 @@ void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const P
   }
   for (TetId t : out.conflict) mark_[t] = Mark::Unseen;
   for (TetId t : out.ring) mark_[t] = Mark::Unseen;
+  return !stopped;
+}
+
+void CavityBuilder::build(const TetStore& s, std::span<const Point> pts, const Point& p,
+                          TetId seed, Cavity& out) {
+  grow(s, pts, p, seed, out, [](TetId, int, TetId) { return false; });
+}
+
+bool CavityBuilder::build_until(const TetStore& s, std::span<const Point> pts, const Point& p,
+                                TetId seed, Cavity& out, const Stop& stop) {
+  return grow(s, pts, p, seed, out, stop);
 }
 
 }  // namespace pdr

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -47,8 +48,19 @@ class CavityBuilder {
   // of pts (so the conflict region is face-connected and star-shaped from p).
   void build(const TetStore& s, std::span<const Point> pts, const Point& p, TetId seed,
              Cavity& out);
+  // As build, but calls stop(from, f, u) for each tet u as it joins C_p, reached across
+  // face f of conflict tet `from` (kNoTet and -1 for the seed), and gives up as soon as it
+  // returns true: false then, with `out` partial. A caller that rejects p for something
+  // it sees in one conflict tet need not build the rest (a far circumcenter's cavity can
+  // span much of T).
+  using Stop = std::function<bool(TetId from, int face, TetId u)>;
+  bool build_until(const TetStore& s, std::span<const Point> pts, const Point& p,
+                   TetId seed, Cavity& out, const Stop& stop);
 
  private:
+  template <class StopFn>
+  bool grow(const TetStore& s, std::span<const Point> pts, const Point& p, TetId seed,
+            Cavity& out, const StopFn& stop);
   // A scoped enum, not a character type: stores to the marks then cannot alias every
   // other object, so the compiler keeps the search's state in registers.
   enum class Mark : std::uint8_t { Unseen = 0, Inside = 1, Outside = 2 };

@@ -95,6 +95,12 @@ class Delaunay {
   void build_cavity(const Point& p, TetId seed, Cavity& out) {
     builder_.build(store_, points_, p, seed, out);
   }
+  // The same, giving up when stop(from, face, u) says so for a tet u joining the cavity
+  // (CavityBuilder::build_until): false then, `out` partial.
+  bool build_cavity_until(const Point& p, TetId seed, Cavity& out,
+                          const CavityBuilder::Stop& stop) {
+    return builder_.build_until(store_, points_, p, seed, out, stop);
+  }
   // Commit a cavity built on the current triangulation (nothing changed since): c.point
   // becomes a new vertex (appended to points()). Outcome Inserted; .tet as below.
   InsertResult commit(const Cavity& c);

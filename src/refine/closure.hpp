@@ -42,9 +42,22 @@ class ClosureScan {
     bool encroached = false;  // else doomed
     std::uint32_t id = 0;
   };
-  std::optional<Hit> first(const VolumeMesh& m, const Cavity& c, const Point& p);
+  // The first such element of the built cavity c; `conflict_seen`: joins() already looked
+  // at every conflict tet, so only the doomed subsegments and the ring are left.
+  std::optional<Hit> first(const VolumeMesh& m, const Cavity& c, const Point& p,
+                           bool conflict_seen = false);
+  // While the cavity is searched (CavityBuilder::build_until): what tet u, joining it
+  // across face `face` of conflict tet `from` (kNoTet for the seed), shows: the face
+  // between them when it is a subfacet (doomed), else an edge or face of u that p
+  // encroaches.
+  std::optional<Hit> joins(const VolumeMesh& m, TetId from, int face, TetId u,
+                           const Point& p) const;
 
  private:
+  void stamp(const TetStore& s, std::span<const TetId> conflict);
+  bool inside_cavity(const TetStore& s, TetId t, VertexId a, VertexId b) const;
+  std::optional<Hit> look(const VolumeMesh& m, TetId t, const Point& p, bool encroached,
+                          bool doomed) const;
   std::vector<std::uint32_t> stamp_;  // per tet slot: == gen_ for the conflict tets
   std::uint32_t gen_ = 0;
 };

@@ -393,6 +393,23 @@ class Refiner {
     return true;
   }
 
+  // Outside the theory: p's cavity into cav_, given up at the first tet that shows an
+  // element of D that p encroaches or the cavity would take out of T (`hit`; else the
+  // whole cavity's first such element, or none); false when p is a vertex.
+  bool plan_scanned(const Point& p, TetId hint, bool& outside,
+                    std::optional<ClosureScan::Hit>& hit) {
+    const Location loc = m_.dt.locate(p, hint);
+    if (loc.kind == Location::Kind::OnVertex) return false;
+    outside = loc.kind == Location::Kind::OutsideHull || !m_.is_inside(loc.tet);
+    hit.reset();
+    const bool whole = m_.dt.build_cavity_until(p, loc.tet, cav_, [&](TetId from, int f, TetId u) {
+      hit = scan_.joins(m_, from, f, u, p);
+      return hit.has_value();
+    });
+    if (whole) hit = scan_.first(m_, cav_, p, /*conflict_seen=*/true);
+    return true;
+  }
+
   // A Lemma 1 audit check: it throws on admissible domains whose T_o is unencroached;
   // otherwise (outside the theory, or Lemma 1's base case failed) the first failure is
   // noted.
@@ -675,14 +692,15 @@ class Refiner {
     // without building p's cavity (refine_along_path).
     if (guard_.active() && refine_along_path(t, p)) return;
     bool outside = false;
-    if (!plan(p, t, cav_, outside)) {
+    std::optional<ClosureScan::Hit> hit;
+    if (!(guard_.active() ? plan_scanned(p, t, outside, hit) : plan(p, t, cav_, outside))) {
       refuse(t, "refine.tet: circumcenter " + point_text(p) + " is already a vertex");
       return;
     }
     if (guard_.active()) {
       // Outside the theory: the first element of D in the cavity's order that p
       // encroaches or the cavity would take out of T (refine/closure.hpp ClosureScan).
-      if (const auto hit = scan_.first(m_, cav_, p)) {
+      if (hit) {
         if (!hit->subsegment)
           refine_subfacet(hit->id, t, t);
         else if (auto why = split(hit->id, t))
