@@ -7,6 +7,12 @@
 // faces is one):
 //   0. repeated faces: a face whose corners are, as a set, an earlier face's (a face that
 //      two closed bodies of an assembly share, each giving it) is read once;
+//   0b. non-planar faces: a face of four or more corners that is not planar within half the
+//      planarity tolerance (a bilinear quad of a modelling tool) is split into triangles, a
+//      quad along its shorter diagonal, a larger face by ear clipping in its plane's
+//      projection (exact orient2d); one that cannot be split (three corners on a line,
+//      a projection that is not simple) is an error (surface_split.cpp). The triangles
+//      keep the face's line, marker and number;
 //   1. duplicate vertices: vertices with exactly equal coordinates (STL repeats every
 //      corner; -0 equals 0) become one; a coordinate that is not finite is an error;
 //   2. non-degenerate faces: a face has at least 3 corners, no vertex twice (after step 1)
@@ -79,6 +85,19 @@ struct Surface {
     points.push_back(p);
     point_lines.push_back(line);
     point_ids.push_back(id);
+  }
+  // The same source and points, no faces (for a step that rewrites the faces).
+  Surface points_only() const {
+    Surface out;
+    out.source = source;
+    out.points = points;
+    out.point_lines = point_lines;
+    out.point_ids = point_ids;
+    return out;
+  }
+  // The file's number of face f (messages).
+  std::size_t face_number(std::size_t f) const {
+    return f < face_numbers.size() ? face_numbers[f] : f + 1;
   }
   void add_face(std::span<const std::uint32_t> c, std::size_t line, int marker) {
     corners.insert(corners.end(), c.begin(), c.end());

@@ -339,15 +339,11 @@ std::optional<Surface> without_repeated_faces(const Surface& s) {
       any = true;
     }
   if (!any) return std::nullopt;
-  Surface out;
-  out.source = s.source;
-  out.points = s.points;
-  out.point_lines = s.point_lines;
-  out.point_ids = s.point_ids;
+  Surface out = s.points_only();
   for (std::size_t f = 0; f < nf; ++f)
     if (!repeat[f]) {
       out.add_face(s.face(f), s.face_lines[f], s.face_markers[f]);
-      out.face_numbers.push_back(f < s.face_numbers.size() ? s.face_numbers[f] : f + 1);
+      out.face_numbers.push_back(s.face_number(f));
     }
   return out;
 }
@@ -390,6 +386,8 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
     throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
                                   "closed surface of triangles or polygons");
   if (const auto once = without_repeated_faces(s)) return surface_to_plc(*once, planarity_tolerance);
+  if (const auto split = split_nonplanar_faces(s, planarity_tolerance))
+    return surface_to_plc(*split, planarity_tolerance);
   const SurfaceTopology t = build_topology(s);
   const std::size_t nf = s.face_count();
   UnionFind uf(nf);

@@ -14,7 +14,7 @@
 namespace pdr::io {
 
 std::string face_name(const Surface& s, std::size_t f) {
-  return "face " + std::to_string(f < s.face_numbers.size() ? s.face_numbers[f] : f + 1);
+  return "face " + std::to_string(s.face_number(f));
 }
 
 std::string vertex_name(const Surface& s, const SurfaceTopology& t, std::uint32_t v) {

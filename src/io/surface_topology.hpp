@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ struct SurfaceTopology {
     return {corners.data() + s.face_start[f], s.face_start[f + 1] - s.face_start[f]};
   }
 };
+
+// Step 0b of surface.hpp (surface_split.cpp): the surface with its faces that are not
+// planar within the tolerance split into triangles; nullopt when no face is.
+std::optional<Surface> split_nonplanar_faces(const Surface& s, double tolerance);
 
 // Steps 1-4 of surface.hpp; throws InputError naming the face, edge or vertex at fault.
 SurfaceTopology build_topology(const Surface& s);

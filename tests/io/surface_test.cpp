@@ -129,6 +129,50 @@ TEST(Surface, FoldsBeyondToleranceStayApart) {
   EXPECT_EQ(plc.facets.size(), 3u + 6u);
 }
 
+// Step 0b: faces of four or more corners that are not planar within the tolerance (the
+// bilinear patches of a quad mesh) are split into triangles. A box of squares with one
+// corner moved out by 0.1 along the diagonal: the three squares at it become two triangles each, along the
+// diagonal that misses the raised corner (the shorter one), and the other three stay
+// whole; read as OBJ, the same facets. A non-planar pentagon (a box top with a raised
+// point on an edge) is split by ear clipping; one whose projection crosses itself is an
+// error naming its line.
+TEST(Surface, NonPlanarFacesSplitIntoTriangles) {
+  ScratchDir dir;
+  Shape box = box_squares();
+  box.points[7] = {1.1, 1.1, 1.1};  // (1, 1, 1), moved out along the diagonal
+  const Plc plc = read_off_text(dir, off_text(box));
+  EXPECT_EQ(plc.facets.size(), 3u + 6u);
+  const Point raised{1.1, 1.1, 1.1};
+  std::size_t triangles = 0;
+  for (const std::set<Point>& f : facet_sets(plc)) {
+    if (f.size() != 3) continue;
+    ++triangles;
+    // The diagonal from the raised corner is the longer one: no triangle has both ends.
+    for (const Point& other : {Point{0, 0, 1}, Point{0, 1, 0}, Point{1, 0, 0}})
+      EXPECT_FALSE(f.count(raised) && f.count(other));
+  }
+  EXPECT_EQ(triangles, 6u);
+  write_text(dir / "s.obj", obj_text(box));
+  EXPECT_EQ(facet_sets(read_domain(dir / "s.obj")), facet_sets(plc));
+
+  Shape five = box_squares();
+  five.points.push_back({0.5, 0, 1.05});  // 8: on the top's edge from 4 to 5, raised
+  five.faces[1] = {4, 8, 5, 7, 6};       // the top: a non-planar pentagon
+  five.faces[2] = {0, 1, 5, 8, 4};       // the side y = 0: a planar pentagon
+  const Plc split = read_off_text(dir, off_text(five));
+  EXPECT_EQ(split.facets.size(), 5u + 3u);
+  for (const PlcFacet& f : split.facets) ASSERT_EQ(f.polygons.size(), 1u);
+
+  // A pentagon whose projection crosses itself (its edge from the second corner to the third
+  // crosses the one from the fourth to the fifth), every other corner raised. Ear clipping
+  // alone would split it (each step finds an ear), so the simplicity test is what refuses it.
+  const std::string star =
+      "OFF\n5 1 0\n2 6 0\n6 2 0.2\n3 3 0\n6 6 0.2\n1 0 0\n5 0 1 2 3 4\n";
+  const std::string m = off_error(star);
+  EXPECT_NE(m.find("s.off:8: face 1: planar faces: the face is not planar"), std::string::npos)
+      << m;
+}
+
 TEST(Surface, SubnormalCoordinatesReadOrFailAsInput) {
   // A box whose corners carry subnormal and huge coordinates (a fuzzer's find): the double
   // normal of a face's plane triple underflows, and step 5's projection axis must still be

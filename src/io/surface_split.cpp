@@ -1,0 +1,198 @@
+// Step 0b of surface_to_plc (surface.hpp): faces of four or more corners that are not
+// planar within the planarity tolerance (a quad mesh from a modelling or scanning tool,
+// whose quads are bilinear patches, not planar polygons) are split into triangles, as a
+// user of such files expects (Gmsh, Blender and trimesh triangulate them too).
+//
+// How much a face is off its plane is a tolerance question (it classifies input and steers
+// nothing later): the largest distance of a corner to the plane through the corners'
+// centroid with the Newell normal, relative to the face's bounding-box diagonal, against
+// kSplitShare * tolerance. A face left whole keeps a margin for the domain's least-squares
+// test (domain/plane.hpp), which judges each facet with the full tolerance.
+//
+// The triangles are decided exactly (orient2d on the input doubles). A quad is split along
+// the shorter of its diagonals whose two triangles are not degenerate: the quad is not
+// planar, so the two meet only along the diagonal. A larger face is split by ear clipping
+// in the projection that drops the axis of its Newell normal's largest component, each ear
+// strictly convex with no other corner in or on it. A face with no such triangulation (a
+// quad with three corners on a line both ways, a larger face whose projection is not a
+// simple polygon) is an error naming it.
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "geom/predicates.hpp"
+#include "io/surface.hpp"
+#include "io/surface_topology.hpp"
+
+namespace pdr::io {
+
+namespace {
+
+constexpr double kSplitShare = 0.5;
+
+Point newell_normal(const Surface& s, std::span<const std::uint32_t> c) {
+  Point n{0, 0, 0};
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Point &p = s.points[c[i]], &q = s.points[c[(i + 1) % c.size()]];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
+// Whether face c lies within kSplitShare * tolerance * (its bounding-box diagonal) of the
+// plane through its centroid with the Newell normal n (a face with a zero normal is left to
+// step 2, which names what is wrong with it).
+bool planar_enough(const Surface& s, std::span<const std::uint32_t> c, const Point& n,
+                   double tolerance) {
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(len > 0)) return true;
+  Point centroid{0, 0, 0}, lo = s.points[c[0]], hi = s.points[c[0]];
+  for (const std::uint32_t v : c)
+    for (int k = 0; k < 3; ++k) {
+      centroid[k] += s.points[v][k] / static_cast<double>(c.size());
+      lo[k] = std::min(lo[k], s.points[v][k]);
+      hi[k] = std::max(hi[k], s.points[v][k]);
+    }
+  double dev = 0;
+  for (const std::uint32_t v : c) {
+    const Point& p = s.points[v];
+    dev = std::max(dev, std::fabs(n[0] * (p[0] - centroid[0]) + n[1] * (p[1] - centroid[1]) +
+                                  n[2] * (p[2] - centroid[2])) / len);
+  }
+  const double diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  return dev <= kSplitShare * tolerance * diag;
+}
+
+double dist2(const Point& a, const Point& b) {
+  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+// The triangles of face c (corner indices into c), or nullopt when its projection along
+// `axis`, turning with sign `turn`, has no triangulation of the kind above.
+std::optional<std::vector<std::array<std::size_t, 3>>> triangles(
+    const Surface& s, std::span<const std::uint32_t> c, int axis, Sign turn) {
+  const auto orient = [&](std::size_t i, std::size_t j, std::size_t k) {
+    const auto a = drop_axis(s.points[c[i]], axis), b = drop_axis(s.points[c[j]], axis),
+               d = drop_axis(s.points[c[k]], axis);
+    return orient2d(a.data(), b.data(), d.data());
+  };
+  std::vector<std::array<std::size_t, 3>> out;
+  if (c.size() == 4) {
+    // A quad not planar within the tolerance is not planar: its two triangles along either
+    // diagonal meet only along it, so a diagonal serves unless a triangle is degenerate
+    // (three corners on one line: orient2d zero in every axis projection).
+    const auto collinear = [&](std::size_t i, std::size_t j, std::size_t k) {
+      for (int a = 0; a < 3; ++a) {
+        const auto p = drop_axis(s.points[c[i]], a), q = drop_axis(s.points[c[j]], a),
+                   r = drop_axis(s.points[c[k]], a);
+        if (orient2d(p.data(), q.data(), r.data()) != Sign::Zero) return false;
+      }
+      return true;
+    };
+    const bool d02 = !collinear(0, 1, 2) && !collinear(0, 2, 3);
+    const bool d13 = !collinear(1, 2, 3) && !collinear(1, 3, 0);
+    if (!d02 && !d13) return std::nullopt;
+    const bool use02 = d02 && (!d13 || dist2(s.points[c[0]], s.points[c[2]]) <=
+                                           dist2(s.points[c[1]], s.points[c[3]]));
+    if (use02)
+      out = {{0, 1, 2}, {0, 2, 3}};
+    else
+      out = {{1, 2, 3}, {1, 3, 0}};
+    return out;
+  }
+  // Ear clipping needs a simple polygon: no two edges that are not neighbours meet
+  // (segments meet iff neither has the other's ends strictly on one side).
+  const std::size_t n = c.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // neighbours across the wrap
+      const std::size_t i1 = (i + 1) % n, j1 = (j + 1) % n;
+      const Sign a = orient(i, i1, j), b = orient(i, i1, j1);
+      const Sign d = orient(j, j1, i), e = orient(j, j1, i1);
+      const bool apart = (a == b && a != Sign::Zero) || (d == e && d != Sign::Zero);
+      if (!apart) {
+        const bool collinear = a == Sign::Zero && b == Sign::Zero;
+        if (!collinear) return std::nullopt;
+        // On one line: they meet unless one lies wholly before the other along it.
+        const auto pi = drop_axis(s.points[c[i]], axis), pi1 = drop_axis(s.points[c[i1]], axis);
+        const auto pj = drop_axis(s.points[c[j]], axis), pj1 = drop_axis(s.points[c[j1]], axis);
+        const int ax = pi[0] != pi1[0] ? 0 : 1;
+        const double lo1 = std::min(pi[ax], pi1[ax]), hi1 = std::max(pi[ax], pi1[ax]);
+        const double lo2 = std::min(pj[ax], pj1[ax]), hi2 = std::max(pj[ax], pj1[ax]);
+        if (!(hi1 < lo2 || hi2 < lo1)) return std::nullopt;
+      }
+    }
+  std::vector<std::size_t> left(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) left[i] = i;
+  while (left.size() > 3) {
+    bool clipped = false;
+    for (std::size_t k = 0; k < left.size() && !clipped; ++k) {
+      const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k],
+                        d = left[(k + 1) % left.size()];
+      if (orient(a, b, d) != turn) continue;
+      bool empty = true;
+      for (const std::size_t x : left) {
+        if (x == a || x == b || x == d) continue;
+        const Sign s1 = orient(a, b, x), s2 = orient(b, d, x), s3 = orient(d, a, x);
+        const auto not_out = [&](Sign g) { return g == turn || g == Sign::Zero; };
+        if (not_out(s1) && not_out(s2) && not_out(s3)) empty = false;
+      }
+      if (!empty) continue;
+      out.push_back({a, b, d});
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(k));
+      clipped = true;
+    }
+    if (!clipped) return std::nullopt;
+  }
+  if (orient(left[0], left[1], left[2]) != turn) return std::nullopt;
+  out.push_back({left[0], left[1], left[2]});
+  return out;
+}
+
+}  // namespace
+
+std::optional<Surface> split_nonplanar_faces(const Surface& s, double tolerance) {
+  for (const Point& p : s.points)  // step 1 names a coordinate that is not finite
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return std::nullopt;
+  const std::size_t nf = s.face_count();
+  std::vector<Point> normal(nf);
+  bool any = false;
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (s.face(f).size() < 4) continue;
+    normal[f] = newell_normal(s, s.face(f));
+    if (!planar_enough(s, s.face(f), normal[f], tolerance)) any = true;
+  }
+  if (!any) return std::nullopt;
+  Surface out = s.points_only();
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::span<const std::uint32_t> c = s.face(f);
+    const std::size_t number = s.face_number(f);
+    if (c.size() < 4 || planar_enough(s, c, normal[f], tolerance)) {
+      out.add_face(c, s.face_lines[f], s.face_markers[f]);
+      out.face_numbers.push_back(number);
+      continue;
+    }
+    const Point& n = normal[f];
+    const int axis = std::fabs(n[0]) >= std::fabs(n[1]) && std::fabs(n[0]) >= std::fabs(n[2]) ? 0
+                     : std::fabs(n[1]) >= std::fabs(n[2])                                   ? 1
+                                                                                             : 2;
+    const Sign turn = n[axis] > 0 ? Sign::Positive : Sign::Negative;
+    const auto tris = triangles(s, c, axis, turn);
+    if (!tris)
+      face_fail(s, f,
+                "planar faces: the face is not planar within the planarity tolerance and cannot "
+                "be split into triangles (its projection on its plane is not a simple polygon, "
+                "or corners lie on one line); split it into planar faces");
+    for (const auto& t : *tris) {
+      const std::uint32_t tri[3] = {c[t[0]], c[t[1]], c[t[2]]};
+      out.add_face(tri, s.face_lines[f], s.face_markers[f]);
+      out.face_numbers.push_back(number);
+    }
+  }
+  return out;
+}
+
+}  // namespace pdr::io
