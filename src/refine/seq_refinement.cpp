@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -196,8 +197,17 @@ class Refiner {
   static constexpr double kRepairFloor = 0x1p-24;
   // ...and never below what doubles can place: a circumcenter of a subfacet of circumradius
   // r among coordinates of magnitude X is computed with an error of a few ulps of X, so r
-  // must keep about 2^-40 of X (12 bits of the 52 left for the position within r).
+  // must keep about 2^-40 of X (12 bits of the 52 left for the position within r); the
+  // same for a piece of a subsegment a repair splits.
   static constexpr double kPrecisionFloor = 0x1p-40;
+
+  // The largest absolute coordinate of the points.
+  static double magnitude(std::initializer_list<Point> pts) {
+    double mag = 0;
+    for (const Point& p : pts)
+      for (int k = 0; k < 3; ++k) mag = std::max(mag, std::abs(p[k]));
+    return mag;
+  }
 
   // Why a repair of subfacet f may not go in: below the repair floor, or below what doubles
   // can place; empty when it may.
@@ -207,9 +217,7 @@ class Refiner {
     const surface::Subfacet& x = m_.surf.subfacet(f);
     const Point &a = m_.surf.point(x.v[0]), &b = m_.surf.point(x.v[1]),
                 &c = m_.surf.point(x.v[2]);
-    double mag = 0;
-    for (const Point* p : {&a, &b, &c})
-      for (int k = 0; k < 3; ++k) mag = std::max(mag, std::abs((*p)[k]));
+    const double mag = magnitude({a, b, c});
     const double r = std::sqrt(construct::triangle_circumradius2(a, b, c));
     if (r >= kPrecisionFloor * mag) return {};
     std::ostringstream os;
@@ -501,6 +509,17 @@ class Refiner {
       double l2 = 0;
       for (int k = 0; k < 3; ++k) l2 += (e[k] - where.p[k]) * (e[k] - where.p[k]);
       piece2 = std::min(piece2, l2);
+    }
+    // A repair's split below what doubles can place (kPrecisionFloor; the pieces of a
+    // shell split are not halves, so the shorter one is what counts).
+    if (below_floor && std::sqrt(piece2) < kPrecisionFloor * magnitude({a, b})) {
+      std::ostringstream os;
+      os.precision(6);
+      os << "refine.precision: splitting subsegment (" << x.v[0] << ", " << x.v[1] << ") of "
+         << m_.surf.segment_name(x.segment) << " would leave a piece of length "
+         << std::sqrt(piece2) << ", below 2^-40 of its coordinates' magnitude "
+         << magnitude({a, b}) << ": doubles cannot place the split point";
+      return os.str();
     }
     res_.stats.h = std::min(res_.stats.h, std::sqrt(piece2));
     // T's cavity first, D's split second: the step decides before it changes anything
