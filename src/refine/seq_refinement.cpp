@@ -528,7 +528,15 @@ class Refiner {
     if (!plan(where.p, hint, cav_, outside))
       throw RefineError("refine.split: the split point " + point_text(where.p) + " of " +
                         m_.surf.segment_name(x.segment) + " is already a vertex");
-    const surface::SplitResult r = split_subsegment_at(m_.surf, sub, where.p);
+    // Outside the theory a repair's split deep in a cascade can meet a subfacet whose apex
+    // is a vertex of the same segment, collinear with it but for rounding: p is then on
+    // neither side of that edge and the facet's cavity is not star-shaped. Nothing has
+    // changed; the split is refused and listed (exit 3, NOT CONFORMING when it was a
+    // repair), not an internal error.
+    const surface::SplitPlan sp = surface::plan_split(m_.surf, sub, where.p);
+    if (!sp.failure.empty())
+      return "refine.precision: " + sp.failure + " (the split point is within rounding of a subfacet's edge)";
+    const surface::SplitResult r = surface::commit_split(m_.surf, sub, sp);
     const VertexId v = insert(cav_, r.vertex);
     ++res_.stats.subsegment_splits;
     after_insert(v, "subsegment", piece2);

@@ -18,8 +18,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "surface/cavity.hpp"
 #include "surface/surface_mesh.hpp"
 
 namespace pdr::surface {
@@ -33,5 +35,17 @@ struct SplitResult {
 
 SplitResult split_subsegment(SurfaceMesh& m, std::uint32_t s);
 SplitResult split_subsegment_at(SurfaceMesh& m, std::uint32_t s, const Point& p);
+
+// The same in two steps, for a caller that must decide before anything changes: the facet
+// cavities of p (read-only), with `failure` naming the facet whose cavity is not
+// star-shaped (empty when every one is), then their commit (precondition: no failure, and
+// nothing changed since the plan).
+struct SplitPlan {
+  Point p{};
+  std::vector<FacetCavity> cavities;
+  std::string failure;
+};
+SplitPlan plan_split(const SurfaceMesh& m, std::uint32_t s, const Point& p);
+SplitResult commit_split(SurfaceMesh& m, std::uint32_t s, const SplitPlan& plan);
 
 }  // namespace pdr::surface

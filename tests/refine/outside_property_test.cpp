@@ -141,6 +141,23 @@ TEST(OutsideProperty, TuckedFlapsEndConforming) {
   }, seed());
 }
 
+// The same property on crumpled tops (tests/support/outside_fixtures.hpp crumpled_top, 4 x 4
+// to 8 x 8 grids; tops that cross themselves are discarded). OPEN BUG (issue #11): 3 to 5 of
+// every 66 valid tops end NOT CONFORMING, repairs cascading towards an input vertex where
+// triangle walls meet (tests/regress/outside-crumpled-top-*.off). Run it with
+// --gtest_also_run_disabled_tests.
+TEST(OutsideProperty, DISABLED_CrumpledTopsEndConforming) {
+  check_property("CrumpledTopsEndConforming", cases(), [] {
+    const int n = *rc::gen::inRange(4, 9);
+    const auto seed = *rc::gen::inRange<std::uint32_t>(0, 1u << 30);
+    const Plc plc = crumpled_top(n, 0.08 + *rc::gen::inRange(0, 8) / 100.0, seed);
+    RC_PRE(pdr::test::error_of(plc).empty());
+    judge_case("OutsideProperty.CrumpledTopsEndConforming", plc, Sizing{},
+               "a crumpled top does not end in a conforming Delaunay mesh",
+               [&] { return outside_failure(plc, Sizing{}); });
+  }, seed());
+}
+
 // The generator's domains are outside the theory by the domain analysis (else the property
 // tests nothing new).
 TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
@@ -158,7 +175,12 @@ TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
 
 // Replays of tests/regress/outside-*.poly and outside-*.off, one test each; a known open bug
 // is registered DISABLED_ with the bug named in its file.
-const std::vector<std::string> kKnownBugs = {};
+const std::vector<std::string> kKnownBugs = {
+    // Repair cascades towards an input vertex where triangle walls of a crumpled top meet
+    // (issue #11: protection around acute vertices).
+    "outside-crumpled-top-split-not-star.off",
+    "outside-crumpled-top-vertex-cascade.off",
+};
 
 // Walls at sharp dihedrals around one axis: the repairs of subfacets missing from T took
 // each other's subfacets out of T in turn, down towards the axis (60,000 vertices and an

@@ -178,6 +178,59 @@ rc::Gen<Plc> gen_tucked_flap() {
   });
 }
 
+Plc crumpled_top(int n, double push, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  const auto uniform = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+  };
+  const auto id = [n](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  std::vector<Point> p;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      Point q{static_cast<double>(i) / n, static_cast<double>(j) / n, 0};
+      if (i > 0 && i < n && j > 0 && j < n) {
+        q[2] = uniform(-0.02, 0.02);
+        if (uniform(0, 1) < push) {
+          const int dir = static_cast<int>(uniform(0, 4));
+          const double by = uniform(1.0, 1.3) / n;
+          q[dir / 2] += (dir % 2 ? -by : by);
+          q[2] += uniform(0.001, 0.02);
+        }
+      }
+      p.push_back(q);
+    }
+  const auto base = static_cast<std::uint32_t>(p.size());
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+    p.push_back({x, y, -0.5});
+  std::vector<FacetSpec> f;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (uniform(0, 1) < 0.5) {
+        f.push_back({{a, b, c}});
+        f.push_back({{a, c, d}});
+      } else {
+        f.push_back({{a, b, d}});
+        f.push_back({{b, c, d}});
+      }
+    }
+  Poly y0, x1, y1, x0;
+  for (int i = n; i >= 0; --i) y0.push_back(id(i, 0));
+  y0.insert(y0.end(), {base, base + 1});
+  for (int j = n; j >= 0; --j) x1.push_back(id(n, j));
+  x1.insert(x1.end(), {base + 1, base + 2});
+  for (int i = 0; i <= n; ++i) y1.push_back(id(i, n));
+  y1.insert(y1.end(), {base + 2, base + 3});
+  for (int j = 0; j <= n; ++j) x0.push_back(id(0, j));
+  x0.insert(x0.end(), {base + 3, base});
+  f.push_back({y0});
+  f.push_back({x1});
+  f.push_back({y1});
+  f.push_back({x0});
+  f.push_back({{base + 3, base + 2, base + 1, base}});
+  return make_plc(p, f);
+}
+
 Plc torus_of_triangles(int n, int m, double r) {
   constexpr double kRing = 3;
   std::vector<Point> p;

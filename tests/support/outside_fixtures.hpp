@@ -56,6 +56,13 @@ Plc tucked_flap(double cx, double vx, double off, double h);
 // Such flaps, folds of 0.8 to 3 degrees, turned by a random rotation or not.
 rc::Gen<Plc> gen_tucked_flap();
 
+// A crumpled top: the box [0,1]^2 x [-0.5,0] whose top is an n x n grid of triangles (each
+// cell split along a random diagonal), its inner vertices at heights in [-0.02, 0.02] and,
+// with probability `push`, moved past a neighbour by 1 to 1.3 cells and raised, so the top
+// folds onto itself; the sides are one polygon each. Many such tops cross themselves
+// (build_domain refuses them: callers discard those).
+Plc crumpled_top(int n, double push, std::uint32_t seed);
+
 // A torus of n x m planar quads (ring radius 3, tube radius r), each quad given as two
 // triangle facets, as a triangulated surface from a CAD or scanning tool writes it: facets
 // across each diagonal are coplanar (exactly before a rotation, within rounding after),
