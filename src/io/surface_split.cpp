@@ -9,11 +9,11 @@
 // kSplitShare * tolerance. A face left whole keeps a margin for the domain's least-squares
 // test (domain/plane.hpp), which judges each facet with the full tolerance.
 //
-// The triangles are decided exactly (orient2d on the input doubles). A quad is split along
-// the shorter of its diagonals whose two triangles are not degenerate: the quad is not
-// planar, so the two meet only along the diagonal. A larger face is split by ear clipping
-// in the projection that drops the axis of its Newell normal's largest component, each ear
-// strictly convex with no other corner in or on it. A face with no such triangulation (a
+// The triangles are decided exactly (orient2d on the input doubles), in the projection
+// that drops the axis of the face's Newell normal's largest component. A quad is split
+// along the shorter of its diagonals that lie inside it in that view, or, folded so far
+// that none does, along the shorter whose two triangles are not degenerate. A larger face
+// is split by ear clipping, each ear strictly convex with no other corner in or on it. A face with no such triangulation (a
 // quad with three corners on a line both ways, a larger face whose projection is not a
 // simple polygon) is an error naming it.
 #include <cmath>
@@ -81,9 +81,12 @@ std::optional<std::vector<std::array<std::size_t, 3>>> triangles(
   };
   std::vector<std::array<std::size_t, 3>> out;
   if (c.size() == 4) {
-    // A quad not planar within the tolerance is not planar: its two triangles along either
-    // diagonal meet only along it, so a diagonal serves unless a triangle is degenerate
-    // (three corners on one line: orient2d zero in every axis projection).
+    // A diagonal inside the quad as seen along its normal (both triangles turn as the face
+    // does; a quad concave in that view has exactly one); the shorter when both are. A
+    // quad folded so far that neither is (a bow tie in that view): any diagonal whose
+    // triangles are not degenerate (three corners on a line: orient2d zero in every axis
+    // projection), since a quad that is not planar has its two triangles meet only along
+    // the diagonal.
     const auto collinear = [&](std::size_t i, std::size_t j, std::size_t k) {
       for (int a = 0; a < 3; ++a) {
         const auto p = drop_axis(s.points[c[i]], a), q = drop_axis(s.points[c[j]], a),
@@ -92,8 +95,12 @@ std::optional<std::vector<std::array<std::size_t, 3>>> triangles(
       }
       return true;
     };
-    const bool d02 = !collinear(0, 1, 2) && !collinear(0, 2, 3);
-    const bool d13 = !collinear(1, 2, 3) && !collinear(1, 3, 0);
+    bool d02 = orient(0, 1, 2) == turn && orient(0, 2, 3) == turn;
+    bool d13 = orient(1, 2, 3) == turn && orient(1, 3, 0) == turn;
+    if (!d02 && !d13) {
+      d02 = !collinear(0, 1, 2) && !collinear(0, 2, 3);
+      d13 = !collinear(1, 2, 3) && !collinear(1, 3, 0);
+    }
     if (!d02 && !d13) return std::nullopt;
     const bool use02 = d02 && (!d13 || dist2(s.points[c[0]], s.points[c[2]]) <=
                                            dist2(s.points[c[1]], s.points[c[3]]));

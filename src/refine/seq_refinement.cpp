@@ -521,7 +521,6 @@ class Refiner {
          << magnitude({a, b}) << ": doubles cannot place the split point";
       return os.str();
     }
-    res_.stats.h = std::min(res_.stats.h, std::sqrt(piece2));
     // T's cavity first, D's split second: the step decides before it changes anything
     // (docs/parallel.md: a step that must fetch tets from another submesh is dropped).
     bool outside = false;
@@ -536,6 +535,7 @@ class Refiner {
     const surface::SplitPlan sp = surface::plan_split(m_.surf, sub, where.p);
     if (!sp.failure.empty())
       return "refine.precision: " + sp.failure + " (the split point is within rounding of a subfacet's edge)";
+    res_.stats.h = std::min(res_.stats.h, std::sqrt(piece2));
     const surface::SplitResult r = surface::commit_split(m_.surf, sub, sp);
     const VertexId v = insert(cav_, r.vertex);
     ++res_.stats.subsegment_splits;

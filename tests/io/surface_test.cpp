@@ -12,6 +12,7 @@
 #include "io/error.hpp"
 #include "io/mesh_io.hpp"
 #include "io/surface.hpp"
+#include "io/surface_topology.hpp"
 #include "io_test_util.hpp"
 #include "surface_shapes.hpp"
 
@@ -171,6 +172,27 @@ TEST(Surface, NonPlanarFacesSplitIntoTriangles) {
   const std::string m = off_error(star);
   EXPECT_NE(m.find("s.off:8: face 1: planar faces: the face is not planar"), std::string::npos)
       << m;
+}
+
+// A non-planar quad that is concave seen along its normal (corner 3 reflex): its shorter
+// diagonal, 0-2, lies outside it in that view and would fold one triangle over the notch;
+// the split takes 1-3, the diagonal inside.
+TEST(Surface, ConcaveNonPlanarQuadSplitsAlongItsInnerDiagonal) {
+  Surface s;
+  s.source = "q.off";
+  for (const Point& p : {Point{0, 0, 0}, Point{10, 0.5, 0}, Point{0, 1, 0}, Point{5, 0.5, 0.01}})
+    s.add_point(p, 0, static_cast<std::int64_t>(s.points.size()));
+  const std::uint32_t quad[4] = {0, 1, 2, 3};
+  s.add_face(quad, 7, 0);
+  const auto split = split_nonplanar_faces(s, 1e-9);
+  ASSERT_TRUE(split.has_value());
+  ASSERT_EQ(split->face_count(), 2u);
+  for (std::size_t f = 0; f < 2; ++f) {
+    const auto c = split->face(f);
+    EXPECT_TRUE(std::find(c.begin(), c.end(), 1u) != c.end() &&
+                std::find(c.begin(), c.end(), 3u) != c.end());
+    EXPECT_EQ(split->face_lines[f], 7u);
+  }
 }
 
 TEST(Surface, SubnormalCoordinatesReadOrFailAsInput) {
