@@ -88,15 +88,22 @@ RC_GTEST_PROP(AxisZones, CopiesKeepDistancesAndLieOnTheirWalls, ()) {
       Point apex{};
       for (const std::uint32_t v : t.v)
         if (v != chain[0] && v != chain[1]) apex = s.mesh.point(v);
-      // A point of f in the zone: from the first axis subsegment's midpoint towards the
-      // apex, at most a fraction of the radius away (so closer than that to the axis).
+      // A point of f in the zone: from the first axis subsegment's midpoint, square to the
+      // axis towards the apex's side, a fraction of the radius away. (Straight towards the
+      // apex it could pass the axis's end when the first subsegment is short, outside the
+      // zone: a seed found that.)
       const double frac = *rc::gen::inRange(1, 99) / 100.0;
       const Point m{(s.mesh.point(chain[0])[0] + s.mesh.point(chain[1])[0]) / 2,
                     (s.mesh.point(chain[0])[1] + s.mesh.point(chain[1])[1]) / 2,
                     (s.mesh.point(chain[0])[2] + s.mesh.point(chain[1])[2]) / 2};
-      const double to_apex = std::sqrt(dot(sub(apex, m), sub(apex, m)));
+      const Point axis = sub(B, A);
+      const Point to_apex = sub(apex, m);
+      const double along_m = dot(to_apex, axis) / dot(axis, axis);
+      const Point square{to_apex[0] - along_m * axis[0], to_apex[1] - along_m * axis[1],
+                         to_apex[2] - along_m * axis[2]};
+      const double len = std::sqrt(dot(square, square));
       Point p;
-      for (int k = 0; k < 3; ++k) p[k] = m[k] + frac * radius * (apex[k] - m[k]) / to_apex;
+      for (int k = 0; k < 3; ++k) p[k] = m[k] + frac * radius * square[k] / len;
       p = place_on_facet(s.mesh.facets[f].chart, p);
       const auto [along, r] = axial(A, B, p);
       RC_ASSERT(r < radius);
