@@ -9,7 +9,8 @@
 //      two closed bodies of an assembly share, each giving it) is read once;
 //   0b. non-planar faces: a face of four or more corners that is not planar within half the
 //      planarity tolerance (a bilinear quad of a modelling tool) is split into triangles, a
-//      quad along its shorter diagonal, a larger face by ear clipping in its plane's
+//      quad along its shorter diagonal inside it as seen along its normal, a larger face by
+//      ear clipping in its plane's
 //      projection (exact orient2d); one that cannot be split (three corners on a line,
 //      a projection that is not simple) is an error (surface_split.cpp). The triangles
 //      keep the face's line, marker and number;

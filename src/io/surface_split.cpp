@@ -13,9 +13,9 @@
 // that drops the axis of the face's Newell normal's largest component. A quad is split
 // along the shorter of its diagonals that lie inside it in that view, or, folded so far
 // that none does, along the shorter whose two triangles are not degenerate. A larger face
-// is split by ear clipping, each ear strictly convex with no other corner in or on it. A face with no such triangulation (a
-// quad with three corners on a line both ways, a larger face whose projection is not a
-// simple polygon) is an error naming it.
+// is split by ear clipping, each ear strictly convex with no other corner in or on it. A
+// face with no such triangulation (a quad with three corners on a line both ways, a larger
+// face whose projection is not a simple polygon) is an error naming it.
 #include <cmath>
 #include <optional>
 #include <vector>

@@ -233,9 +233,13 @@ void ConformityTracker::start(const VolumeMesh& m) {
     if (s.is_alive(t)) dirty_.push_back(t);
 }
 
-const EncroachedLists& ConformityTracker::doomed(const VolumeMesh& m, const Cavity& c) {
+void ConformityTracker::doomed_none() {
   doomed_.subsegments.clear();
   doomed_.subfacets.clear();
+}
+
+const EncroachedLists& ConformityTracker::doomed(const VolumeMesh& m, const Cavity& c) {
+  doomed_none();
   doomed_elements(m, c, doomed_);
   return doomed_;
 }

@@ -86,6 +86,9 @@ class ConformityTracker {
   void start(const VolumeMesh& m);
   // The elements committing c would take out of T (filled anew; the buffers are reused).
   const EncroachedLists& doomed(const VolumeMesh& m, const Cavity& c);
+  // The same when the caller knows c dooms nothing (refine/closure.hpp ClosureScan found
+  // none in the whole cavity): the lists are emptied without a scan.
+  void doomed_none();
   // After the commit of vertex v with `star`: the last doomed() elements and missing_at
   // join the missing ones, and the star is dirty while any is. True when new elements
   // went missing.

@@ -743,14 +743,18 @@ class Refiner {
     }
     // An element of D the cavity would take out of T is refined first, as if p encroached
     // it (refine/conformity.hpp); outside the theory the scan above found none.
-    const EncroachedLists& doomed = conformity_.doomed(m_, cav_);
-    if (!doomed.subsegments.empty()) {
-      if (auto why = split(doomed.subsegments.front().id, t)) refuse(t, std::move(*why));
-      return;
-    }
-    if (!doomed.subfacets.empty()) {
-      refine_subfacet(doomed.subfacets.front().id, t, t);
-      return;
+    if (guard_.active()) {
+      conformity_.doomed_none();
+    } else {
+      const EncroachedLists& doomed = conformity_.doomed(m_, cav_);
+      if (!doomed.subsegments.empty()) {
+        if (auto why = split(doomed.subsegments.front().id, t)) refuse(t, std::move(*why));
+        return;
+      }
+      if (!doomed.subfacets.empty()) {
+        refine_subfacet(doomed.subfacets.front().id, t, t);
+        return;
+      }
     }
     if (outside) {
       refuse(t, "refine.outside: circumcenter " + point_text(p) +
