@@ -32,6 +32,7 @@
 #include "refine/leftovers.hpp"
 #include "refine/quality.hpp"
 #include "refine/split.hpp"
+#include "refine/vertex_zones.hpp"
 #include "refine/work_queue.hpp"
 #include "surface/insert.hpp"
 #include "surface/locate.hpp"
@@ -152,6 +153,8 @@ class Refiner {
   RefusedTets refused_;
   SplitGuard guard_;     // empty for admissible domains (midpoints)
   AxisZones zones_;      // rotation copies around sharp axes (inadmissible domains only)
+  VertexZones balls_;    // protecting balls around acute vertices (inadmissible domains only)
+  bool filling_ = false;  // a zone's shell is going in (zone_repair)
   bool watch_encroachment_ = false;  // new stars searched for encroachment (run())
   EncroachedLists enc_;  // the encroachment guard's work (inadmissible domains only)
   ConformityTracker conformity_;  // refine/conformity.hpp
@@ -212,11 +215,13 @@ class Refiner {
   // Why a repair of subfacet f may not go in: below the repair floor, or below what doubles
   // can place; empty when it may.
   std::string refuse_repair(std::uint32_t f) const {
-    if (std::string why = guard_.refuse_subfacet(m_.surf, f, kRepairFloor); !why.empty())
-      return why;
     const surface::Subfacet& x = m_.surf.subfacet(f);
     const Point &a = m_.surf.point(x.v[0]), &b = m_.surf.point(x.v[1]),
                 &c = m_.surf.point(x.v[2]);
+    // In a protecting ball the zone's rules bound the repairs (refine/vertex_zones.hpp).
+    if (in_active_ball(construct::triangle_circumcenter(a, b, c))) return {};
+    if (std::string why = guard_.refuse_subfacet(m_.surf, f, kRepairFloor); !why.empty())
+      return why;
     const double mag = magnitude({a, b, c});
     const double r = std::sqrt(construct::triangle_circumradius2(a, b, c));
     if (r >= kPrecisionFloor * mag) return {};
@@ -348,6 +353,15 @@ class Refiner {
     guard_ = SplitGuard(
         m_.surf, acute, [b = budget_](double d) { return b.resolution_at(d) / 64; }, o_.cylinders, cap);
     zones_ = AxisZones(m_.surf, o_.cylinders, cap);
+    {
+      const std::vector<double> near = nearest_at_start();
+      balls_ = VertexZones(m_.surf, acute, [&](std::uint32_t v) {
+        double d = std::numeric_limits<double>::infinity();
+        for (const std::uint32_t g : m_.surf.vertex_subsegments(v))
+          d = std::min(d, m_.surf.subsegment_size(g));
+        return std::min(budget_.resolution_at(d) / 64, near[v] / 2);
+      });
+    }
     const TetStore& s = m_.dt.store();
     std::vector<TetId> all;
     for (TetId t = 0; t < s.slots(); ++t)
@@ -499,15 +513,24 @@ class Refiner {
   }
 
   // Fig. 2 Refine(s) (refine/split.hpp: where); the reason when the guard refuses.
+  // In a protecting ball only a repair goes on, by the zone's rules.
   std::optional<std::string> split(std::uint32_t sub, TetId hint, bool below_floor = false) {
     const SplitGuard::Plan where = guard_.plan(m_.surf, sub, below_floor);
     if (!where.ok) return where.reason;
+    if (const auto z = ball_for(where.p, below_floor))
+      return below_floor ? zone_repair(*z, kNone, where.p) : ball_refusal(*z, where.p);
+    return split_at(sub, where.p, hint, below_floor);
+  }
+
+  // Splits subsegment sub at p (on it up to rounding); the reason when it cannot.
+  std::optional<std::string> split_at(std::uint32_t sub, const Point& p, TetId hint,
+                                      bool below_floor) {
     const Subsegment& x = m_.surf.subsegment(sub);
     const Point a = m_.surf.point(x.v[0]), b = m_.surf.point(x.v[1]);
     double piece2 = std::numeric_limits<double>::infinity();
     for (const Point& e : {a, b}) {
       double l2 = 0;
-      for (int k = 0; k < 3; ++k) l2 += (e[k] - where.p[k]) * (e[k] - where.p[k]);
+      for (int k = 0; k < 3; ++k) l2 += (e[k] - p[k]) * (e[k] - p[k]);
       piece2 = std::min(piece2, l2);
     }
     // A repair's split below what doubles can place (kPrecisionFloor; the pieces of a
@@ -524,15 +547,15 @@ class Refiner {
     // T's cavity first, D's split second: the step decides before it changes anything
     // (docs/parallel.md: a step that must fetch tets from another submesh is dropped).
     bool outside = false;
-    if (!plan(where.p, hint, cav_, outside))
-      throw RefineError("refine.split: the split point " + point_text(where.p) + " of " +
+    if (!plan(p, hint, cav_, outside))
+      throw RefineError("refine.split: the split point " + point_text(p) + " of " +
                         m_.surf.segment_name(x.segment) + " is already a vertex");
     // Outside the theory a repair's split deep in a cascade can meet a subfacet whose apex
     // is a vertex of the same segment, collinear with it but for rounding: p is then on
     // neither side of that edge and the facet's cavity is not star-shaped. Nothing has
     // changed; the split is refused and listed (exit 3, NOT CONFORMING when it was a
     // repair), not an internal error.
-    const surface::SplitPlan sp = surface::plan_split(m_.surf, sub, where.p);
+    const surface::SplitPlan sp = surface::plan_split(m_.surf, sub, p);
     if (!sp.failure.empty())
       return "refine.precision: " + sp.failure + " (the split point is within rounding of a subfacet's edge)";
     res_.stats.h = std::min(res_.stats.h, std::sqrt(piece2));
@@ -583,6 +606,15 @@ class Refiner {
         pending_size2_ = r2;
       }
     }
+    if (fc.status == surface::CavityStatus::Ok)
+      if (const auto z = ball_for(fc.p, below_floor)) {
+        pending_copies_.clear();
+        if (!below_floor)
+          give_up(t, ball_refusal(*z, fc.p));
+        else if (auto why = zone_repair(*z, f, fc.p))
+          give_up(t, std::move(*why));
+        return;
+      }
     insert_on_facet(fc, hint, t, below_floor, r2, f);
     pending_copies_.clear();  // not inserted: no copies
   }
@@ -625,7 +657,7 @@ class Refiner {
     const std::uint32_t sv = m_.surf.add_vertex(fc.p, {HomeKind::Facet, fc.facet});
     commit_facet_cavity(m_.surf, fc, sv);
     const VertexId v = insert(cav2_, sv);
-    ++(quiet ? res_.stats.axis_copies : res_.stats.subfacet_circumcenters);
+    if (!quiet) ++res_.stats.subfacet_circumcenters;
     after_insert(v, "subfacet", size2);
     return OnFacet::Inserted;
   }
@@ -635,6 +667,10 @@ class Refiner {
   // as a repair), then the copy is tried again. Nothing is reported when it cannot go in
   // (outside its facet, on a vertex): the refinement goes on without it.
   void insert_copy(const AxisZones::Copy& c, double size2) {
+    if (in_active_ball(c.p)) {  // only the zone's shell goes in a protecting ball
+      ++res_.stats.axis_copies_dropped;
+      return;
+    }
     // The walk starts at the axis vertex nearest the copy (it stays one after splits).
     std::uint32_t from = 0;
     double best = std::numeric_limits<double>::infinity();
@@ -650,10 +686,170 @@ class Refiner {
           surface::build_facet_cavity(m_.surf, c.facet, c.p, {loc->subfacet}, std::nullopt);
       const TetId hint = m_.dt.last_tet();
       const OnFacet r = insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, size2, kNone);
-      if (r == OnFacet::Inserted) return;
+      if (r == OnFacet::Inserted) {
+        ++res_.stats.axis_copies;
+        return;
+      }
       if (r != OnFacet::SplitInstead) break;
     }
     ++res_.stats.axis_copies_dropped;
+  }
+
+  // The protecting balls around acute vertices (refine/vertex_zones.hpp).
+
+  // Per input vertex of D, the distance to its nearest other vertex in T (one pass over
+  // T's edges). A ball's first radius is at most the protected length at its vertex (the
+  // local d of its subsegments, as the split guard's) and half this, so it holds its vertex
+  // alone.
+  std::vector<double> nearest_at_start() const {
+    std::vector<double> near2(m_.surf.vertex_count(), std::numeric_limits<double>::infinity());
+    const TetStore& s = m_.dt.store();
+    const auto input = [&](VertexId v) {
+      const std::uint32_t sv = m_.d2s[v];
+      return sv != kNone && m_.surf.home(sv).kind == HomeKind::Input ? sv : kNone;
+    };
+    for (TetId t = 0; t < s.slots(); ++t) {
+      if (!s.is_alive(t) || s.is_ghost(t)) continue;
+      for (const auto& e : tables::kEdgeVertex) {
+        const VertexId a = s.vertex(t, e[0]), b = s.vertex(t, e[1]);
+        const double d2 = domain::dist2_point_point(pt(a), pt(b));
+        for (const std::uint32_t sv : {input(a), input(b)})
+          if (sv != kNone) near2[sv] = std::min(near2[sv], d2);
+      }
+    }
+    for (double& x : near2) x = std::sqrt(x);
+    return near2;
+  }
+
+  // Half the distance from D's vertex v to its nearest vertex in T (one of its neighbours
+  // there); 0 when v is not in T.
+  double half_nearest(std::uint32_t v) {
+    const VertexId tv = v < m_.s2d.size() ? m_.s2d[v] : kNone;
+    if (tv == kNone) return 0;
+    const Location loc = m_.dt.locate(pt(tv), m_.dt.last_tet());
+    if (loc.kind != Location::Kind::OnVertex) return 0;
+    vertex_star(m_, tv, loc.tet, around_);
+    const TetStore& s = m_.dt.store();
+    double best = std::numeric_limits<double>::infinity();
+    for (const TetId t : around_)
+      for (int i = 0; i < 4; ++i) {
+        const VertexId w = s.vertex(t, i);
+        if (w == tv || w == kGhostVertex) continue;
+        best = std::min(best, domain::dist2_point_point(pt(w), pt(tv)));
+      }
+    return std::sqrt(best) / 2;
+  }
+
+  // The ball whose open ball holds p, dormant or active.
+  std::optional<std::uint32_t> ball_of(const Point& p) const {
+    if (balls_.empty()) return std::nullopt;
+    return balls_.holding(p);
+  }
+  bool in_active_ball(const Point& p) const {
+    const auto z = ball_of(p);
+    return z && balls_.active(*z);
+  }
+
+  // The active ball holding p, the point of a step. A repair's point in a dormant ball
+  // activates it (its radius then at most half the distance from its vertex to the nearest
+  // other, so that it holds its vertex alone: the first deep repair there comes before any
+  // vertex near it), and p counts only if it is still inside.
+  std::optional<std::uint32_t> ball_for(const Point& p, bool repair) {
+    const auto z = ball_of(p);
+    if (!z || balls_.active(*z)) return z;
+    if (!repair) return std::nullopt;
+    balls_.activate(*z, half_nearest(balls_.vertex(*z)));
+    ++res_.stats.ball_zones;
+    return ball_of(p);
+  }
+
+  std::string ball_refusal(std::uint32_t z, const Point& p) const {
+    std::ostringstream os;
+    os.precision(6);
+    os << "refine.ball: " << point_text(p) << " lies in the protecting ball of acute input vertex "
+       << balls_.vertex(z) << " (radius " << balls_.radius(z)
+       << "), where only the ball's shell goes in";
+    return os.str();
+  }
+
+  // A repair whose point p falls in ball z, for subfacet f (kNone: a subsegment's split):
+  // the zone's rules. The reason when nothing can go in.
+  std::optional<std::string> zone_repair(std::uint32_t z, std::uint32_t f, const Point& p) {
+    if (filling_) return ball_refusal(z, p);  // the shell's own repairs wait for it
+    const std::size_t before = m_.dt.num_points();
+    const auto none_went_in = [&]() -> std::optional<std::string> {
+      if (m_.dt.num_points() > before) return std::nullopt;
+      return "refine.ball: no vertex of the shell of the protecting ball of acute input vertex " +
+             std::to_string(balls_.vertex(z)) + " could be inserted";
+    };
+    if (f != kNone) {
+      const Subfacet& x = m_.surf.subfacet(f);
+      for (int i = 0; i < 3; ++i)
+        if (const auto piece = balls_.split_piece(z, x.facet, x.v[(i + 1) % 3], x.v[(i + 2) % 3])) {
+          filling_ = true;
+          insert_shell_point(z, *piece);
+          filling_ = false;
+          return none_went_in();
+        }
+    }
+    if (balls_.filled(z) &&
+        !balls_.shrink(z, kPrecisionFloor * magnitude({m_.surf.point(balls_.vertex(z))}))) {
+      std::ostringstream os;
+      os.precision(6);
+      os << "refine.precision: the protecting ball of acute input vertex " << balls_.vertex(z)
+         << " cannot shrink below radius " << balls_.radius(z)
+         << " (2^-40 of its coordinates, or of its first radius)";
+      return os.str();
+    }
+    filling_ = true;
+    balls_.set_filled(z);
+    ++res_.stats.ball_fills;
+    for (const VertexZones::ShellPoint& sp : balls_.shell(z)) {
+      if (at_cap()) break;
+      insert_shell_point(z, sp);
+    }
+    filling_ = false;
+    return none_went_in();
+  }
+
+  // Inserts shell point sp of ball z (on a segment: a split of the subsegment at the ball's
+  // vertex; in a facet: a vertex of the facet) and records its vertex. Nothing is reported
+  // when it cannot go in: the repairs that follow see what is missing.
+  void insert_shell_point(std::uint32_t z, const VertexZones::ShellPoint& sp) {
+    const std::uint32_t v = balls_.vertex(z);
+    const TetId hint = m_.dt.last_tet();
+    if (sp.segment != VertexZones::kNone) {
+      for (const std::uint32_t g : m_.surf.vertex_subsegments(v)) {
+        const Subsegment& x = m_.surf.subsegment(g);
+        if (x.segment != sp.segment) continue;
+        const std::uint32_t w = x.v[0] == v ? x.v[1] : x.v[0];
+        const double l = std::sqrt(domain::dist2_point_point(m_.surf.point(w), m_.surf.point(v)));
+        if (l <= balls_.radius(z) * (1 + 0x1p-20)) {  // the shell's point is already there
+          balls_.record(z, sp, w);
+          return;
+        }
+        const std::size_t before = m_.surf.vertex_count();
+        if (!split_at(g, sp.p, hint, /*below_floor=*/true) && m_.surf.vertex_count() > before) {
+          balls_.record(z, sp, static_cast<std::uint32_t>(before));
+          ++res_.stats.ball_vertices;
+        }
+        return;
+      }
+      return;
+    }
+    const Point p = surface::place_on_facet(m_.surf.facets[sp.facet].chart, sp.p);
+    const auto loc = surface::locate_in_facet(m_.surf, sp.facet, p, v);
+    if (!loc || loc->on_subsegment) return;
+    const surface::FacetCavity fc =
+        surface::build_facet_cavity(m_.surf, sp.facet, p, {loc->subfacet}, std::nullopt);
+    const std::size_t before = m_.surf.vertex_count();
+    const double r = balls_.radius(z);
+    if (insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, r * r, kNone) ==
+            OnFacet::Inserted &&
+        m_.surf.vertex_count() > before) {
+      balls_.record(z, sp, static_cast<std::uint32_t>(before));
+      ++res_.stats.ball_vertices;
+    }
   }
 
   // An element of `holder` (a tet of p's cavity) that p encroaches, refined on behalf of t.
@@ -715,6 +911,10 @@ class Refiner {
     const VertexId* v = m_.dt.store().vertices(t);
     const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
     const Point p = construct::circumcenter(a, b, c, d);
+    if (const auto z = ball_of(p); z && balls_.active(*z)) {
+      refuse(t, ball_refusal(*z, p));
+      return;
+    }
     // Outside the theory, an element that p encroaches on the way from t to p is refined
     // without building p's cavity (refine_along_path).
     if (guard_.active() && refine_along_path(t, p)) return;

@@ -130,6 +130,9 @@ struct RefineStats {
   std::size_t subfacet_circumcenters = 0;
   std::size_t axis_copies = 0;  // rotation copies near sharp axes (refine/axis_zones.hpp)
   std::size_t axis_copies_dropped = 0;  // copies outside their facet, on a vertex, refused
+  std::size_t ball_zones = 0;     // protecting balls activated (refine/vertex_zones.hpp)
+  std::size_t ball_fills = 0;     // shells filled (each after the first: the ball halved)
+  std::size_t ball_vertices = 0;  // vertices of shells and of their pieces' splits
   std::size_t subsegment_splits = 0;
   std::size_t refused = 0;
   std::size_t vertex_cap = 0;

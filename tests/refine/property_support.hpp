@@ -136,10 +136,13 @@ void check_property(const std::string& name, int n, F property,
 
 // Registers one gtest per file `prefix`*.poly of tests/regress in suite `suite`, each
 // running `failure(path)` ("" when it passes); a file listed in known_bugs is registered
-// DISABLED_ (gtest lists it) with the bug named in the file.
+// DISABLED_ (gtest lists it) with the bug named in the file; one listed in `slow` (a replay
+// of more than about ten seconds) DISABLED_SLOW_, which a CTest test labelled slow runs
+// (--gtest_also_run_disabled_tests --gtest_filter=*.DISABLED_SLOW_*), the sanitizer pass not.
 template <class Failure>
 bool register_replays(const char* suite, const std::string& prefix,
-                      const std::vector<std::string>& known_bugs, Failure failure) {
+                      const std::vector<std::string>& known_bugs, Failure failure,
+                      const std::vector<std::string>& slow = {}) {
   class Replay : public ::testing::Test {
    public:
     Replay(std::string path, Failure f) : path_(std::move(path)), f_(f) {}
@@ -164,6 +167,8 @@ bool register_replays(const char* suite, const std::string& prefix,
     std::string name = p.stem().string();
     if (std::find(known_bugs.begin(), known_bugs.end(), p.filename().string()) != known_bugs.end())
       name = "DISABLED_" + name;
+    else if (std::find(slow.begin(), slow.end(), p.filename().string()) != slow.end())
+      name = "DISABLED_SLOW_" + name;
     std::replace(name.begin(), name.end(), '-', '_');
     ::testing::RegisterTest(suite, name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                             [p, failure]() -> ::testing::Test* {
