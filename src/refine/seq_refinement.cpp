@@ -667,10 +667,6 @@ class Refiner {
   // as a repair), then the copy is tried again. Nothing is reported when it cannot go in
   // (outside its facet, on a vertex): the refinement goes on without it.
   void insert_copy(const AxisZones::Copy& c, double size2) {
-    if (in_active_ball(c.p)) {  // only the zone's shell goes in a protecting ball
-      ++res_.stats.axis_copies_dropped;
-      return;
-    }
     // The walk starts at the axis vertex nearest the copy (it stays one after splits).
     std::uint32_t from = 0;
     double best = std::numeric_limits<double>::infinity();
@@ -680,6 +676,9 @@ class Refiner {
         from = v;
       }
     for (int attempt = 0; attempt < 4 && !at_cap(); ++attempt) {
+      // Only a ball's shell goes in an active protecting ball, and a split the last
+      // attempt made instead can have turned one on.
+      if (in_active_ball(c.p)) break;
       const auto loc = surface::locate_in_facet(m_.surf, c.facet, c.p, from);
       if (!loc || loc->on_subsegment) break;
       const surface::FacetCavity fc =
@@ -758,9 +757,38 @@ class Refiner {
     const auto z = ball_of(p);
     if (!z || balls_.active(*z)) return z;
     if (!repair) return std::nullopt;
-    balls_.activate(*z, half_nearest(balls_.vertex(*z)));
+    const std::uint32_t v = balls_.vertex(*z);
+    const double bound = std::min(half_nearest(v), unrelated_distance(v) / 2);
+    if (!(bound > 0)) return std::nullopt;  // v not found in T: the ball stays dormant
+    balls_.activate(*z, bound);
     ++res_.stats.ball_zones;
     return ball_of(p);
+  }
+
+  // The distance from input vertex v to the subsegments of segments not through v and to
+  // the subfacets of facets not containing it: a ball no wider than half of it meets only
+  // wedges of the facets through v (a scan of D, once per ball turned on).
+  double unrelated_distance(std::uint32_t v) const {
+    const Point& x = m_.surf.point(v);
+    std::vector<std::uint8_t> at_v(m_.surf.facets.size(), 0);
+    std::vector<std::uint8_t> seg_at_v(m_.surf.segments.size(), 0);
+    for (std::uint32_t s = 0; s < m_.surf.segments.size(); ++s) {
+      const surface::SurfaceSegment& g = m_.surf.segments[s];
+      if (g.a != v && g.b != v) continue;
+      seg_at_v[s] = 1;
+      for (const std::uint32_t f : g.facets) at_v[f] = 1;
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const Subsegment& g : m_.surf.subsegments())
+      if (!seg_at_v[g.segment])
+        best = std::min(best, domain::dist2_point_segment(x, m_.surf.point(g.v[0]),
+                                                          m_.surf.point(g.v[1])));
+    for (const Subfacet& t : m_.surf.subfacets())
+      if (t.alive && !at_v[t.facet])
+        best = std::min(best, domain::dist2_point_triangle(x, m_.surf.point(t.v[0]),
+                                                           m_.surf.point(t.v[1]),
+                                                           m_.surf.point(t.v[2])));
+    return std::sqrt(best);
   }
 
   std::string ball_refusal(std::uint32_t z, const Point& p) const {

@@ -268,7 +268,7 @@ std::optional<VertexZones::ShellPoint> VertexZones::split_piece(std::uint32_t zi
     for (std::uint32_t i = 0; i + 1 < arc.vertices.size(); ++i) {
       const std::uint32_t x = arc.vertices[i], y = arc.vertices[i + 1];
       if (x == kNone || y == kNone || !((x == a && y == b) || (x == b && y == a))) continue;
-      const double t = (arc.angles[i] + arc.angles[i + 1]) / 2;
+      const double t = split_angle(arc.angles[i], arc.angles[i + 1], arc.geometry.length);
       if (!(t > arc.angles[i] && t < arc.angles[i + 1])) return std::nullopt;
       arc.angles.insert(arc.angles.begin() + i + 1, t);
       arc.vertices.insert(arc.vertices.begin() + i + 1, kNone);

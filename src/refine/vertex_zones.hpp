@@ -13,8 +13,9 @@
 // meshing of polyhedra with small angles) and the concentric shells of Ruppert and
 // Shewchuk. The zone of v is the open ball B of radius r around v (a power of two, at most
 // the protected length at v and half the distance to v's nearest vertex when the
-// refinement starts, so B holds v alone, and far less than the distance to any component
-// that does not contain v, so inside B every facet through v is a union of wedges at v).
+// refinement starts; when a repair turns the zone on, at most half the distance from v to
+// its nearest vertex then and to the elements of D of segments and facets not through v:
+// B then holds v alone, and inside B every facet through v is a union of wedges at v).
 // Seen from v, each wedge is a great-circle arc on the unit sphere between two segment
 // directions. The zone samples every arc once (sample_arcs): the arcs' ends plus points
 // such that the spherical diametral cap of every piece between consecutive samples holds
@@ -31,8 +32,10 @@
 // sphere holds no vertex (the invariant), and E reaches r / cos(theta / 2) at most. So E
 // is empty unless a vertex lies in the thin lens between the sphere and that radius;
 // then (v, a, b) may leave T, its circumcenter (at r / (2 cos(theta / 2)) < r from v)
-// falls in B, and the piece is split on the sphere (a sample at its middle angle), which
-// halves theta and thins the lens, until the vertex is outside it. Every subfacet of F
+// falls in B, and the piece is split on the sphere (as sample_arcs splits: at its middle,
+// or at the power of two nearest it for a piece at an end of its arc), which shortens it
+// to at most two thirds and thins the lens, until the vertex is outside it. (A new sample
+// can lie in a piece's cap on another arc; that fan then leaves T and is split in turn.) Every subfacet of F
 // with the shell edge (a, b) whose circumcenter falls in B goes the same way: its circle
 // passes through a and b and does not hold v (D is Delaunay in F's plane), so its centre
 // is no farther than v from the chord, and its disc holds the middle of the arc from a to
@@ -129,8 +132,8 @@ class VertexZones {
   bool filled(std::uint32_t z) const { return zones_[z].filled; }
   void set_filled(std::uint32_t z) { zones_[z].filled = true; }
   // If D's vertices a and b are consecutive shell vertices of an arc of facet f in zone z:
-  // that piece split at its middle angle (the sample is added to the arc, for later shells
-  // too), as the point to insert.
+  // that piece split as sample_arcs splits (the sample is added to the arc, for later
+  // shells too), as the point to insert.
   std::optional<ShellPoint> split_piece(std::uint32_t z, std::uint32_t f, std::uint32_t a,
                                         std::uint32_t b);
   // Halves zone z's radius and empties its shell; false (nothing changed) when the new

@@ -4,11 +4,13 @@
 // sharp dihedrals), sample_arcs ends within its cap, every piece is at most 30 degrees,
 // and no sample lies strictly inside the diametral cap of another arc's piece (checked
 // with dot products, not the sampler's own angle function). Arcs that share an end get
-// the same angles from it (concentric shells on the sphere). Then the lemma, with exact
-// predicates: with the samples put on a sphere of radius r around v, the equatorial ball
-// of every fan triangle (v, a, b) holds no other shell vertex and no point inside the
-// sphere: what makes the fans faces of the Delaunay tetrahedralization whatever else
-// lies outside the sphere's thin lens.
+// the same first split from it (concentric shells on the sphere). Then the lemma, with
+// exact predicates: with the samples put on a sphere of radius r around v, the equatorial
+// ball of a fan triangle (v, a, b) holds a shell vertex exactly when the vertex's
+// direction is in the piece's cap (so none with these samples), and it does hold points
+// inside the sphere along the piece (the ball's invariant keeps those empty): what makes
+// the fans faces of the Delaunay tetrahedralization whatever lies outside the sphere's
+// thin lens.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -109,7 +111,7 @@ RC_GTEST_PROP(SampleArcs, PiecesAreShortAndNoSampleIsInAnotherPiecesCap, ()) {
 TEST(SampleArcs, ArcsSharingAnEndGetTheSameAnglesFromIt) {
   // Two facets along one segment (direction z) at a 5-degree dihedral, of face angles 20
   // and 45 degrees at the vertex: the longer arc's middle encroaches the shorter's piece,
-  // and the splits near the shared end go to the same powers of two on both.
+  // and the first splits from the shared end go to the same power of two on both.
   const double dihedral = 5 * kPi / 180;
   const Point s{0, 0, 1};
   const auto at = [&](double phi, double polar) {
