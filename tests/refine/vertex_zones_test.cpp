@@ -19,8 +19,11 @@
 #include <numbers>
 #include <vector>
 
+#include "domain/analysis.hpp"
 #include "geom/encroach.hpp"
 #include "refine/vertex_zones.hpp"
+#include "support/outside_fixtures.hpp"
+#include "surface/init.hpp"
 
 namespace pdr::refine {
 namespace {
@@ -163,6 +166,89 @@ RC_GTEST_PROP(VertexZones, FanTrianglesHaveEmptyEquatorialBalls, ()) {
           RC_ASSERT(in_equatorial_ball(v, pa, pb, shell[k]) == Sign::Negative);
       }
     }
+}
+
+// A zone on a real surface mesh: the apex of a pyramid (n triangle facets meeting there, a
+// sharp apex when tall), turned and moved to negative coordinates. The ball holds what is
+// within its radius (a power of two below the bound) and nothing beyond; every shell point
+// lies on the sphere, on its facet's plane and inside its facet (the wedge); a piece
+// between consecutive shell vertices of a facet splits on the sphere between them, a pair
+// that is no piece does not; shrinking halves the radius and empties the shell.
+RC_GTEST_PROP(VertexZones, ShellsOfAPyramidsApexLieOnTheSphereInTheirFacets, ()) {
+  const int n = *rc::gen::inRange(3, 8);
+  const double height = *rc::gen::inRange(5, 80) / 10.0;
+  Plc plc = pdr::test::rotated(pdr::test::pyramid(n, height), *rc::gen::inRange(0, 628) / 100.0,
+                               *rc::gen::inRange(0, 628) / 100.0, *rc::gen::inRange(0, 628) / 100.0);
+  for (Point& p : plc.points) p = {p[0] - 7.25, p[1] - 3.5, p[2] - 11};
+  const domain::DomainAnalysis an = domain::analyze(plc);
+  const surface::SurfaceMesh m = surface::init_surface(an).mesh;
+  const auto apex = static_cast<std::uint32_t>(n);
+  VertexZones zones(m, {apex}, [](std::uint32_t) { return 0.01; });
+  RC_ASSERT(zones.size() == 1u);
+  const double r = zones.radius(0);
+  RC_ASSERT(r == 0x1p-7);
+  const Point a = m.point(apex);
+  const auto off = [&](double t) {
+    const Point e = unit({1, 2, 3});
+    return Point{a[0] + t * e[0], a[1] + t * e[1], a[2] + t * e[2]};
+  };
+  RC_ASSERT(zones.holding(off(0.9 * r)) == std::optional<std::uint32_t>(0));
+  RC_ASSERT(!zones.holding(off(1.1 * r)).has_value());
+  RC_ASSERT(!zones.holding(m.point(0)).has_value());
+  const auto shell = zones.shell(0);
+  std::uint32_t id = 100000;
+  std::vector<std::pair<VertexZones::ShellPoint, std::uint32_t>> recorded;
+  for (const auto& sp : shell) {
+    const Point d{sp.p[0] - a[0], sp.p[1] - a[1], sp.p[2] - a[2]};
+    RC_ASSERT(std::abs(std::sqrt(dot(d, d)) - r) <= 1e-12 * r);
+    if (sp.facet != VertexZones::kNone) {
+      // Inside facet sp.facet = triangle (i, i + 1, apex): on its plane, within its wedge.
+      const surface::SurfaceFacet& f = m.facets[sp.facet];
+      const Point nrm = unit(f.chart.normal);
+      RC_ASSERT(std::abs(dot(nrm, d)) <= 1e-9 * r);
+      std::vector<Point> sides;
+      for (const std::uint32_t g : f.segments) {
+        const auto& seg = m.segments[g];
+        if (seg.a == apex || seg.b == apex) {
+          const Point& o = m.point(seg.a == apex ? seg.b : seg.a);
+          sides.push_back(unit({o[0] - a[0], o[1] - a[1], o[2] - a[2]}));
+        }
+      }
+      RC_ASSERT(sides.size() == 2u);
+      const double whole = angle(sides[0], sides[1]);
+      RC_ASSERT(std::abs(angle(sides[0], d) + angle(d, sides[1]) - whole) <= 1e-9);
+    }
+    zones.record(0, sp, id);
+    recorded.emplace_back(sp, id++);
+  }
+  zones.set_filled(0);
+  // The samples of the first facet with inner samples, in angle from one of its sides.
+  for (const auto& [sp, vid] : recorded) {
+    if (sp.facet == VertexZones::kNone) continue;
+    std::vector<std::pair<double, std::uint32_t>> order;  // angle from the first side, id
+    std::vector<std::pair<Point, std::uint32_t>> ends;
+    for (const auto& [q, qid] : recorded)
+      if (q.segment != VertexZones::kNone &&
+          std::binary_search(m.segments[q.segment].facets.begin(), m.segments[q.segment].facets.end(), sp.facet))
+        ends.emplace_back(q.p, qid);
+    RC_ASSERT(ends.size() == 2u);
+    const Point s0{ends[0].first[0] - a[0], ends[0].first[1] - a[1], ends[0].first[2] - a[2]};
+    for (const auto& [q, qid] : recorded)
+      if (q.facet == sp.facet || qid == ends[0].second || qid == ends[1].second)
+        order.emplace_back(angle(s0, {q.p[0] - a[0], q.p[1] - a[1], q.p[2] - a[2]}), qid);
+    std::sort(order.begin(), order.end());
+    const auto piece = zones.split_piece(0, sp.facet, order[0].second, order[1].second);
+    RC_ASSERT(piece.has_value());
+    const Point d{piece->p[0] - a[0], piece->p[1] - a[1], piece->p[2] - a[2]};
+    RC_ASSERT(std::abs(std::sqrt(dot(d, d)) - r) <= 1e-12 * r);
+    RC_ASSERT(angle(s0, d) > order[0].first && angle(s0, d) < order[1].first);
+    RC_ASSERT(!zones.split_piece(0, sp.facet, order.front().second, order.back().second));
+    break;
+  }
+  RC_ASSERT(zones.shrink(0, 0));
+  RC_ASSERT(zones.radius(0) == r / 2);
+  RC_ASSERT(!zones.filled(0));
+  RC_ASSERT(!zones.holding(off(0.6 * r)).has_value());
 }
 
 }  // namespace
