@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <unistd.h>
+
 #include "refine/seq_refinement.hpp"
 
 namespace pdr::refine {
@@ -20,6 +22,13 @@ double box_volume(std::span<const Point> pts) {
 
 }  // namespace
 
+std::size_t memory_vertex_limit() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return 2000000000;
+  const double half = static_cast<double>(pages) * static_cast<double>(page) / 2;
+  return static_cast<std::size_t>(std::min(2.0e9, half / kRefineVertexBytes));
+}
+
 VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o) {
   const double box = box_volume(points);
   box_share_ = std::cbrt(box) / 8;
@@ -33,7 +42,7 @@ VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o
     cap_ = o.max_vertices;
   } else {
     const double cap = 1000.0 + 64.0 * static_cast<double>(points.size()) + 16.0 * box / (u * u * u);
-    cap_ = static_cast<std::size_t>(std::min(cap, 2.0e9));
+    cap_ = std::min(static_cast<std::size_t>(std::min(cap, 2.0e9)), memory_vertex_limit());
   }
 }
 
@@ -47,8 +56,10 @@ bool VertexBudget::reached(std::size_t vertices, std::string& why) const {
         std::to_string(cap_) +
         (user_cap_ ? std::string(" (--max-vertices)")
                    : std::string(" (derived from the input size, its bounding box, d, "
-                                 "B and the size bounds); the domain is probably "
-                                 "outside the theory"));
+                                 "B and the size bounds, and at most what half the "
+                                 "machine's memory holds); the domain is probably outside "
+                                 "the theory, or the sizes ask for more than the machine "
+                                 "holds"));
   return true;
 }
 

@@ -6,7 +6,10 @@
 // an eighth of the cube root of the bounding box's volume); resolution_at(d_v) the same
 // with a local d (the protected lengths at acute vertices, refine/split.hpp). The cap is
 // RefineOptions::max_vertices, or 1000 + 64 n + 16 (box volume) / u^3 for n input vertices
-// and resolution u: a resource limit, never a geometric decision.
+// and resolution u, and never more than half the machine's memory holds at
+// kRefineVertexBytes a vertex (a run outside the theory that would not end stops with exit
+// 3 and a report, not in the kernel's out-of-memory killer): a resource limit, never a
+// geometric decision.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +20,14 @@
 #include "geom/point.hpp"
 
 namespace pdr::refine {
+
+// What the refinement holds per vertex, for the memory bound of the derived cap: about 6.5
+// tets a vertex at some 110 bytes of topology and flags each, the point, its maps and D's
+// share (cube-in-cube at 3.7M tets: 355 MiB of peak for 640K vertices, 580 bytes a vertex;
+// outside the theory D holds more).
+inline constexpr std::size_t kRefineVertexBytes = 1024;
+// Half the machine's physical memory over kRefineVertexBytes (2e9 when unknown).
+std::size_t memory_vertex_limit();
 
 struct RefineOptions;
 
