@@ -127,6 +127,20 @@ TEST(OutsideProperty, PyramidsAndTwistedPrismsEndConforming) {
   }, seed());
 }
 
+// The same property on spiky star-shaped polyhedra of triangle facets, turned, with a
+// random volume bound (a fifteenth of the cases): spikes and pits at every angle, acute
+// vertices everywhere. 262 runs of a script version (2026-11-27, after the protecting balls;
+// some turned balls on) and 100 cases at seed 11 all ended conforming.
+TEST(OutsideProperty, SpikyPolyhedraEndConforming) {
+  check_property("SpikyPolyhedraEndConforming", std::max(1, cases() / 15), [] {
+    const Plc plc = *gen_spiky();
+    const Sizing z = *gen_fine_sizing(plc);
+    judge_case("OutsideProperty.SpikyPolyhedraEndConforming", plc, z,
+               "a spiky polyhedron does not end in a conforming Delaunay mesh",
+               [&] { return outside_failure(plc, z); });
+  }, seed());
+}
+
 // The same property on tucked flaps (a cap triangle folded onto the top at 0.8 to 3
 // degrees), default sizing: a fifteenth of the cases, each one to two seconds. Before the repair
 // floor went to 2^-24 of the protected length, 6 of 6 such flaps (folds of 0.3 to 1.2

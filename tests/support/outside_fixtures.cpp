@@ -231,6 +231,54 @@ Plc crumpled_top(int n, double push, std::uint32_t seed) {
   return make_plc(p, f);
 }
 
+Plc spiky(int nlat, int nlon, double rmin, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  const auto uniform = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+  };
+  constexpr double kPi = std::numbers::pi;
+  std::vector<Point> p{{0, 0, uniform(rmin, 1)}};
+  for (int i = 1; i < nlat; ++i) {
+    const double th = kPi * (i + uniform(-0.2, 0.2)) / nlat;
+    for (int j = 0; j < nlon; ++j) {
+      const double ph = 2 * kPi * (j + uniform(-0.3, 0.3)) / nlon, r = uniform(rmin, 1);
+      p.push_back({r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
+                   r * std::cos(th)});
+    }
+  }
+  p.push_back({0, 0, -uniform(rmin, 1)});
+  const auto south = static_cast<std::uint32_t>(p.size() - 1);
+  const auto id = [nlon](int i, int j) {
+    return static_cast<std::uint32_t>(1 + (i - 1) * nlon + (j % nlon));
+  };
+  std::vector<FacetSpec> f;
+  for (int j = 0; j < nlon; ++j) f.push_back({{0, id(1, j), id(1, j + 1)}});
+  for (int i = 1; i + 1 < nlat; ++i)
+    for (int j = 0; j < nlon; ++j) {
+      const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (uniform(0, 1) < 0.5) {
+        f.push_back({{a, b, c}});
+        f.push_back({{a, c, d}});
+      } else {
+        f.push_back({{a, b, d}});
+        f.push_back({{b, c, d}});
+      }
+    }
+  for (int j = 0; j < nlon; ++j) f.push_back({{south, id(nlat - 1, j + 1), id(nlat - 1, j)}});
+  return make_plc(p, f);
+}
+
+rc::Gen<Plc> gen_spiky() {
+  return rc::gen::exec([] {
+    const int nlat = *rc::gen::inRange(3, 9), nlon = *rc::gen::inRange(4, 13);
+    const double rmin = *rc::gen::inRange(1, 8) / 10.0;
+    const auto seed = *rc::gen::inRange<std::uint32_t>(0, 1u << 30);
+    const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
+    const double a = angle(), b = angle(), c = angle();
+    return rotated(spiky(nlat, nlon, rmin, seed), a, b, c);
+  });
+}
+
 Plc torus_of_triangles(int n, int m, double r) {
   constexpr double kRing = 3;
   std::vector<Point> p;

@@ -63,6 +63,16 @@ rc::Gen<Plc> gen_tucked_flap();
 // (build_domain refuses them: callers discard those).
 Plc crumpled_top(int n, double push, std::uint32_t seed);
 
+// A spiky star-shaped polyhedron: a latitude-longitude sphere of nlat bands and nlon
+// meridians (poles single vertices), its vertices at jittered angles and random radii in
+// [rmin, 1] (one radius per direction from the origin, so the surface never crosses
+// itself), each quad split along a random diagonal: triangle facets at every angle, sharp
+// spikes and pits, acute vertices everywhere.
+Plc spiky(int nlat, int nlon, double rmin, std::uint32_t seed);
+// Such polyhedra, nlat in [3, 8], nlon in [4, 12], rmin in [0.1, 0.7], turned by a random
+// rotation.
+rc::Gen<Plc> gen_spiky();
+
 // A torus of n x m planar quads (ring radius 3, tube radius r), each quad given as two
 // triangle facets, as a triangulated surface from a CAD or scanning tool writes it: facets
 // across each diagonal are coplanar (exactly before a rotation, within rounding after),
