@@ -35,13 +35,15 @@
 // falls in B, and the piece is split on the sphere (as sample_arcs splits: at its middle,
 // or at the power of two nearest it for a piece at an end of its arc), which shortens it
 // to at most two thirds and thins the lens, until the vertex is outside it. (A new sample
-// can lie in a piece's cap on another arc; that fan then leaves T and is split in turn.) Every subfacet of F
-// with the shell edge (a, b) whose circumcenter falls in B goes the same way: its circle
-// passes through a and b and does not hold v (D is Delaunay in F's plane), so its centre
-// is no farther than v from the chord, and its disc holds the middle of the arc from a to
-// b, which the split inserts.
+// can lie in a piece's cap on another arc; that fan then leaves T and is split in turn.)
+// Every subfacet of F with the shell edge (a, b) whose circumcenter falls in B goes the
+// same way: its circle passes through a and b and does not hold v (D is Delaunay in F's
+// plane), so its centre is no farther than v from the chord, and its disc holds the whole
+// arc of the sphere from a to b, where the split's sample goes.
 //
-// The rules (refine/seq_refinement.cpp). A point a step would insert strictly inside B:
+// The rules (refine/seq_refinement.cpp). A zone is dormant, and changes nothing, until a
+// repair's point falls in its ball; that turns it on (the radius bound above). A point a
+// step would insert strictly inside the ball of an active zone:
 //   - a tet circumcenter, or any refinement that is no repair: refused and listed (a
 //     guard, as the protected length: B is no wider);
 //   - a repair of a subfacet of F with a shell edge (a, b) on F's arc: the piece is split;
