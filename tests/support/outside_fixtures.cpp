@@ -48,6 +48,18 @@ Plc rotated(Plc plc, double a, double b, double c) {
 
 namespace {
 
+// The quad a b c d as two triangle facets, split along a-c or along b-d.
+void split_quad(std::vector<FacetSpec>& f, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                std::uint32_t d, bool along_ac) {
+  if (along_ac) {
+    f.push_back({{a, b, c}});
+    f.push_back({{a, c, d}});
+  } else {
+    f.push_back({{a, b, d}});
+    f.push_back({{b, c, d}});
+  }
+}
+
 bool corners_within(const std::vector<P2d>& p, double lo) {
   for (const double a : corner_angles(p))
     if (a < lo || a > 360 - lo) return false;
@@ -206,13 +218,7 @@ Plc crumpled_top(int n, double push, std::uint32_t seed) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (uniform(0, 1) < 0.5) {
-        f.push_back({{a, b, c}});
-        f.push_back({{a, c, d}});
-      } else {
-        f.push_back({{a, b, d}});
-        f.push_back({{b, c, d}});
-      }
+      split_quad(f, a, b, c, d, uniform(0, 1) < 0.5);
     }
   Poly y0, x1, y1, x0;
   for (int i = n; i >= 0; --i) y0.push_back(id(i, 0));
@@ -256,13 +262,7 @@ Plc spiky(int nlat, int nlon, double rmin, std::uint32_t seed) {
   for (int i = 1; i + 1 < nlat; ++i)
     for (int j = 0; j < nlon; ++j) {
       const std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (uniform(0, 1) < 0.5) {
-        f.push_back({{a, b, c}});
-        f.push_back({{a, c, d}});
-      } else {
-        f.push_back({{a, b, d}});
-        f.push_back({{b, c, d}});
-      }
+      split_quad(f, a, b, c, d, uniform(0, 1) < 0.5);
     }
   for (int j = 0; j < nlon; ++j) f.push_back({{south, id(nlat - 1, j + 1), id(nlat - 1, j)}});
   return make_plc(p, f);
