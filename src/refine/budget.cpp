@@ -5,8 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include <unistd.h>
-
+#include "mesh/physical_memory.hpp"
 #include "refine/seq_refinement.hpp"
 
 namespace pdr::refine {
@@ -23,10 +22,9 @@ double box_volume(std::span<const Point> pts) {
 }  // namespace
 
 std::size_t memory_vertex_limit() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return 2000000000;
-  const double half = static_cast<double>(pages) * static_cast<double>(page) / 2;
-  return static_cast<std::size_t>(std::min(2.0e9, half / kRefineVertexBytes));
+  const double memory = physical_memory_bytes();
+  if (memory <= 0) return 2000000000;
+  return static_cast<std::size_t>(std::min(2.0e9, memory / 2 / kRefineVertexBytes));
 }
 
 VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o) {

@@ -744,10 +744,13 @@ class Refiner {
     if (balls_.empty()) return std::nullopt;
     return balls_.holding(p);
   }
-  bool in_active_ball(const Point& p) const {
-    const auto z = ball_of(p);
-    return z && balls_.active(*z);
+  // The active ball holding p (none is looked up while no ball is on: most runs).
+  std::optional<std::uint32_t> active_ball_of(const Point& p) const {
+    if (!balls_.any_active()) return std::nullopt;
+    const auto z = balls_.holding(p);
+    return z && balls_.active(*z) ? z : std::nullopt;
   }
+  bool in_active_ball(const Point& p) const { return active_ball_of(p).has_value(); }
 
   // The active ball holding p, the point of a step. A repair's point in a dormant ball
   // activates it (its radius then at most half the distance from its vertex to the nearest
@@ -939,7 +942,7 @@ class Refiner {
     const VertexId* v = m_.dt.store().vertices(t);
     const Point &a = pt(v[0]), &b = pt(v[1]), &c = pt(v[2]), &d = pt(v[3]);
     const Point p = construct::circumcenter(a, b, c, d);
-    if (const auto z = ball_of(p); z && balls_.active(*z)) {
+    if (const auto z = active_ball_of(p)) {
       refuse(t, ball_refusal(*z, p));
       return;
     }

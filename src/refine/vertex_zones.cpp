@@ -286,6 +286,7 @@ std::optional<VertexZones::ShellPoint> VertexZones::split_piece(std::uint32_t zi
 
 void VertexZones::activate(std::uint32_t zi, double bound) {
   Zone& z = zones_[zi];
+  if (!z.active) ++active_;
   z.active = true;
   if (bound > 0 && bound < z.r) z.r = std::exp2(std::floor(std::log2(bound)));
 }

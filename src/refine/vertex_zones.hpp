@@ -124,12 +124,11 @@ class VertexZones {
   std::vector<ShellPoint> shell(std::uint32_t z) const;
   // D's vertex `vertex` is shell point s of zone z (the caller inserted it).
   void record(std::uint32_t z, const ShellPoint& s, std::uint32_t vertex);
-  // D's vertex of segment `segment`'s shell point in zone z.
-  void record_segment(std::uint32_t z, std::uint32_t segment, std::uint32_t vertex);
   // A zone is dormant until the first repair in its ball: dormant, it changes nothing.
   // activate(z, bound) makes it active, its radius then the largest power of two at most
   // its radius and `bound` (the caller's: half the distance from v to its nearest vertex).
   bool active(std::uint32_t z) const { return zones_[z].active; }
+  bool any_active() const { return active_ > 0; }
   void activate(std::uint32_t z, double bound);
   bool filled(std::uint32_t z) const { return zones_[z].filled; }
   void set_filled(std::uint32_t z) { zones_[z].filled = true; }
@@ -162,11 +161,14 @@ class VertexZones {
     std::vector<Arc> arcs;
   };
   std::vector<Zone> zones_;
+  std::size_t active_ = 0;  // zones turned on
   // A uniform grid of cell size cell_ over the zones' centres (radii only shrink).
   double cell_ = 0;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> grid_;  // (cell key, zone), sorted
 
   void add(const surface::SurfaceMesh& m, std::uint32_t v, double r);
+  // D's vertex of segment `segment`'s shell point in zone z (the arcs' ends there too).
+  void record_segment(std::uint32_t z, std::uint32_t segment, std::uint32_t vertex);
   void index();
   std::uint64_t key(const Point& p, int dx, int dy, int dz) const;
 };

@@ -1,8 +1,6 @@
 // Mesh initialization, paper §2.1 steps 1 and 2; see surface/init.hpp.
 #include "surface/init.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +11,7 @@
 
 #include "domain/distance.hpp"
 #include "geom/construct.hpp"
+#include "mesh/physical_memory.hpp"
 #include "surface/build.hpp"
 #include "surface/encroach.hpp"
 #include "surface/insert.hpp"
@@ -112,10 +111,8 @@ void set_graded_sizes(SurfaceMesh& m, const domain::PlcDomain& dom) {
 std::size_t vertex_cap(const SurfaceMesh& m, double estimate, const SurfaceOptions& o) {
   const double derived = static_cast<double>(m.vertex_count()) + 16 * estimate + 1024;
   double limit = static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2);
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  if (pages > 0 && page > 0)
-    limit = std::min(limit, static_cast<double>(pages) * static_cast<double>(page) / 4 /
-                                static_cast<double>(kSurfaceVertexBytes));
+  if (const double memory = physical_memory_bytes(); memory > 0)
+    limit = std::min(limit, memory / 4 / static_cast<double>(kSurfaceVertexBytes));
   auto cap = static_cast<std::size_t>(std::min(derived, limit));
   if (o.max_vertices != 0) cap = std::min(cap, o.max_vertices);
   return cap;

@@ -88,6 +88,12 @@ std::string outside_failure(const Plc& plc, const Sizing& z, bool* admissible = 
   return why;
 }
 
+// judge_case with outside_failure: a case of the generator test `name` of OutsideProperty.
+void judge_outside(const std::string& name, const Plc& plc, const Sizing& z,
+                   const std::string& what) {
+  judge_case("OutsideProperty." + name, plc, z, what, [&] { return outside_failure(plc, z); });
+}
+
 TEST(OutsideProperty, EndsInExit0Or3WithAConformingDelaunayMesh) {
   check_property("EndsInExit0Or3WithAConformingDelaunayMesh", cases(), [] {
     const Plc plc = *gen_outside_domain(min_corner());
@@ -108,9 +114,8 @@ TEST(OutsideProperty, EndsInExit0Or3WithAConformingDelaunayMesh) {
 TEST(OutsideProperty, RotatedToriOfTriangleFacetsEndConforming) {
   check_property("RotatedToriOfTriangleFacetsEndConforming", std::max(1, cases() / 3), [] {
     const Plc plc = *gen_rotated_torus_of_triangles();
-    judge_case("OutsideProperty.RotatedToriOfTriangleFacetsEndConforming", plc, Sizing{},
-               "a rotated torus of triangle facets does not end in a conforming Delaunay mesh",
-               [&] { return outside_failure(plc, Sizing{}); });
+    judge_outside("RotatedToriOfTriangleFacetsEndConforming", plc, Sizing{},
+                  "a rotated torus of triangle facets does not end in a conforming Delaunay mesh");
   }, seed());
 }
 
@@ -121,9 +126,8 @@ TEST(OutsideProperty, PyramidsAndTwistedPrismsEndConforming) {
   check_property("PyramidsAndTwistedPrismsEndConforming", std::max(1, cases() / 3), [] {
     const Plc plc = *gen_pyramid_or_twisted_prism();
     const Sizing z = *gen_fine_sizing(plc);
-    judge_case("OutsideProperty.PyramidsAndTwistedPrismsEndConforming", plc, z,
-               "a pyramid or twisted prism does not end in a conforming Delaunay mesh",
-               [&] { return outside_failure(plc, z); });
+    judge_outside("PyramidsAndTwistedPrismsEndConforming", plc, z,
+                  "a pyramid or twisted prism does not end in a conforming Delaunay mesh");
   }, seed());
 }
 
@@ -135,9 +139,8 @@ TEST(OutsideProperty, SpikyPolyhedraEndConforming) {
   check_property("SpikyPolyhedraEndConforming", std::max(1, cases() / 15), [] {
     const Plc plc = *gen_spiky();
     const Sizing z = *gen_fine_sizing(plc);
-    judge_case("OutsideProperty.SpikyPolyhedraEndConforming", plc, z,
-               "a spiky polyhedron does not end in a conforming Delaunay mesh",
-               [&] { return outside_failure(plc, z); });
+    judge_outside("SpikyPolyhedraEndConforming", plc, z,
+                  "a spiky polyhedron does not end in a conforming Delaunay mesh");
   }, seed());
 }
 
@@ -149,9 +152,8 @@ TEST(OutsideProperty, SpikyPolyhedraEndConforming) {
 TEST(OutsideProperty, TuckedFlapsEndConforming) {
   check_property("TuckedFlapsEndConforming", std::max(1, cases() / 15), [] {
     const Plc plc = *gen_tucked_flap();
-    judge_case("OutsideProperty.TuckedFlapsEndConforming", plc, Sizing{},
-               "a tucked flap does not end in a conforming Delaunay mesh",
-               [&] { return outside_failure(plc, Sizing{}); });
+    judge_outside("TuckedFlapsEndConforming", plc, Sizing{},
+                  "a tucked flap does not end in a conforming Delaunay mesh");
   }, seed());
 }
 
@@ -167,9 +169,8 @@ TEST(OutsideProperty, CrumpledTopsEndConforming) {
     const auto seed = *rc::gen::inRange<std::uint32_t>(0, 1u << 30);
     const Plc plc = crumpled_top(n, 0.08 + *rc::gen::inRange(0, 8) / 100.0, seed);
     RC_PRE(pdr::test::error_of(plc).empty());
-    judge_case("OutsideProperty.CrumpledTopsEndConforming", plc, Sizing{},
-               "a crumpled top does not end in a conforming Delaunay mesh",
-               [&] { return outside_failure(plc, Sizing{}); });
+    judge_outside("CrumpledTopsEndConforming", plc, Sizing{},
+                  "a crumpled top does not end in a conforming Delaunay mesh");
   }, seed());
 }
 
