@@ -261,7 +261,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                            {"conformity_breaks", rr.stats.conformity_breaks},
                            {"conformity_splits", rr.stats.conformity_splits},
                            {"conformity_refused", rr.stats.conformity_refused},
-                           {"flag_repairs", rr.stats.flag_repairs}});
+                           {"flag_repairs", rr.stats.flag_repairs},
+                           {"flat_repairs", rr.stats.flat_repairs},
+                           {"face_repairs", rr.stats.face_repairs}});
   if (!rr.stop_reason.empty()) summary.set("stop_reason", rr.stop_reason);
   if (!rr.unsplit.empty()) summary.set("unsplit", rr.unsplit);  // refused by the guards
   if (rr.stats.audit_failures > 0)

@@ -478,6 +478,7 @@ class Refiner {
       const auto f = encroached_subfacet_face(m_, t);
       if (!f) continue;
       const std::size_t before = m_.dt.num_points();
+      ++res_.stats.face_repairs;
       refine_subfacet(*f, t, t);  // its vertex joins step_ (no recursion)
       if (m_.dt.num_points() > before) return true;
     }
@@ -933,9 +934,11 @@ class Refiner {
   void refine_tet(TetId t) {
     // issue #3: refine/flat.hpp; a flat tet's repair (rule 1) is not held by the floor.
     if (const SubfacetPicks f = subfacets_to_refine(m_, t); f.flat) {
+      ++res_.stats.flat_repairs;
       refine_subfacet(*f.flat, t, t, /*below_floor=*/true);
       return;
     } else if (f.any) {
+      ++res_.stats.face_repairs;
       refine_subfacet(*f.any, t, t);
       return;
     }

@@ -143,6 +143,8 @@ struct RefineStats {
   std::size_t conformity_refused = 0;   // ... that a guard refused: T does not conform
   std::size_t flat_left = 0;            // flat tets on a facet (refine/flat.hpp rule 1) left
                                         // inside when the vertex cap stopped the run
+  std::size_t flat_repairs = 0;         // rule 1 of refine/flat.hpp: flat tets on a facet refined
+  std::size_t face_repairs = 0;         // rule 2: subfacet faces with their tet's apex inside
   std::size_t flag_repairs = 0;         // surface insertions whose star's flags disagreed
                                         // with D: every flag recomputed (conformity.hpp)
   std::size_t flag_conflicts = 0;       // faces where parity across D disagreed at the end

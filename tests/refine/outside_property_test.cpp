@@ -215,6 +215,21 @@ TEST(OutsideProperty, RepairCascadesEnd) {
   EXPECT_EQ(j["inserted"].value("conformity_refused", 1), 0) << j.dump(1);
 }
 
+// Rounding puts the split points of a rotated torus's tilted sides ulps off their facets'
+// planes, and four vertices of one facet, nearly cocircular, then make a flat tet inside:
+// the run refines it (refine/flat.hpp rule 1), counts it in inserted.flat_repairs, and ends
+// conforming.
+TEST(OutsideProperty, FlatTetsOnTiltedFacetsAreCountedRepairs) {
+  const std::string path =
+      std::string(PDR_SOURCE_DIR) + "/tests/regress/outside-rotated-torus-triangle-facets.poly";
+  nlohmann::json j;
+  std::string error;
+  const int code = run_mesh(io::read_domain(path), sizing_of_file(path), false, j, &error);
+  ASSERT_GE(code, 0) << error;
+  EXPECT_GT(j["inserted"].value("flat_repairs", std::size_t{0}), 0u) << j.dump(1);
+  EXPECT_FALSE(j.contains("conformity")) << j.dump(1);
+}
+
 [[maybe_unused]] const bool kReplaysRegistered =
     register_replays("OutsideRegress", "outside-", kKnownBugs, [](const std::string& path) {
       return outside_failure(io::read_domain(path), sizing_of_file(path));
