@@ -29,6 +29,7 @@
 #include "refine/property_support.hpp"
 #include "support/admissible_fixtures.hpp"
 #include "support/outside_fixtures.hpp"
+#include "support/outside_verdict.hpp"
 
 namespace pdr::refine::test {
 using namespace pdr::test;
@@ -74,18 +75,7 @@ std::string outside_failure(const Plc& plc, const Sizing& z, bool* admissible = 
   const int code = run_mesh(plc, z, false, j, &error);
   if (code < 0) return error;
   if (admissible) *admissible = j.value("admissible", false);
-  std::string why;
-  if (code != 0 && code != 3) why += "exit code " + std::to_string(code) + "; ";
-  if (j.value("tets", 0) == 0) why += "no tets; ";
-  if (j.contains("conformity")) why += "the run says: " + j["conformity"].get<std::string>() + "; ";
-  if (j.contains("check_failed"))
-    for (const auto& c : j["check_failed"]) {
-      const std::string id = c.get<std::string>();
-      const bool allowed = id == "quality.ratio" || id.rfind("encroachment.", 0) == 0;
-      if (!allowed || code != 3) why += "check " + id + " fails; ";
-    }
-  if (!why.empty()) why += "\n" + j.dump(1);
-  return why;
+  return outside_verdict(code, j);
 }
 
 // judge_case with outside_failure: a case of the generator test `name` of OutsideProperty.
