@@ -4,11 +4,13 @@
 // (tests/support/outside_fixtures.hpp). The input's first 8 bytes seed the generator, the
 // ninth picks the family (star prisms, walled prisms and tees with corners down to 10
 // degrees; spiky polyhedra; rotated tori of triangle facets; pyramids and twisted prisms;
-// not the tucked flaps, whose exact check alone takes minutes with sanitizers on), the tenth its size, the eleventh an optional volume bound (a quarter of the bounding box). A vertex cap
-// of 1,500 keeps an input under the fuzzer's time limit with sanitizers on; a run it stops
-// says nothing about the property and is skipped. Property (issue #11, the same judge as
-// tests/refine/outside_property_test.cpp): exit 0 or 3 with a valid, Delaunay, conforming
-// mesh, only quality.ratio and encroachment.* failing the exact check, and no exception.
+// not the tucked flaps, whose exact check alone takes minutes with sanitizers on), the
+// tenth its size, the eleventh an optional volume bound (a quarter of the bounding box). A
+// vertex cap of 1,500 keeps an input under the fuzzer's time limit with sanitizers on; a
+// run it stops says nothing about the property and is skipped. Property (issue #11, the
+// same judge as tests/refine/outside_property_test.cpp): exit 0 or 3 with a valid,
+// Delaunay, conforming mesh, only quality.ratio and encroachment.* failing the exact check,
+// and no exception.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>

@@ -143,8 +143,10 @@ struct RefineStats {
   std::size_t conformity_refused = 0;   // ... that a guard refused: T does not conform
   std::size_t flat_left = 0;            // flat tets on a facet (refine/flat.hpp rule 1) left
                                         // inside when the vertex cap stopped the run
-  std::size_t flat_repairs = 0;         // rule 1 of refine/flat.hpp: flat tets on a facet refined
-  std::size_t face_repairs = 0;         // rule 2: subfacet faces with their tet's apex inside
+  std::size_t flat_repairs = 0;         // refinements asked by refine/flat.hpp rule 1 (a flat
+                                        // tet on a facet), inserted or refused
+  std::size_t face_repairs = 0;         // ... by rule 2 (a subfacet face with its tet's apex
+                                        // in its equatorial ball: rounding or geometry)
   std::size_t flag_repairs = 0;         // surface insertions whose star's flags disagreed
                                         // with D: every flag recomputed (conformity.hpp)
   std::size_t flag_conflicts = 0;       // faces where parity across D disagreed at the end
