@@ -16,7 +16,7 @@ enum class Type : std::uint8_t { Fetch = 1, Tets = 2, Refuse = 3, Relink = 4, Po
 Bytes migration_message(std::uint64_t search, bool walk, const Migration& m) {
   WireWriter w;
   w.put(Type::Tets).put(search).put<std::uint8_t>(walk).put(m.from).put(m.to);
-  w.put_vector(m.tets).put_vector(m.vertices);
+  w.put_vector(m.tets).put_vector(m.vertices).put_vector(m.edge_labels).put_vector(m.face_labels);
   return w.take();
 }
 
@@ -368,6 +368,8 @@ void InsertionActor::take_tets(WireReader& r) {
   m.to = r.get<ActorId>();
   m.tets = r.get_vector<TetRecord>();
   m.vertices = r.get_vector<VertexRecord>();
+  m.edge_labels = r.get_vector<EdgeLabel>();
+  m.face_labels = r.get_vector<FaceLabel>();
   const std::vector<TetId> ids = sub_.give(m);
   if (walk && !ids.empty()) s_.hint = sub_.tet_gid(ids.front());
   for (const TetId t : ids) want(t);

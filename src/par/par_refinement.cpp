@@ -29,11 +29,10 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   for (int k = t.rank(); k < n; k += t.size()) {
     Transport& port = mux ? mux->port(k) : t;
     ports.push_back(&port);
-    actors.push_back(std::make_unique<InsertionActor>(
-        port,
-        Submesh::extract(static_cast<ActorId>(k), m0.dt.store(), m0.dt.points(), m0.inside,
-                         part, rules.vertex_tags(), dense),
-        seed, &rules));
+    Submesh sub = Submesh::extract(static_cast<ActorId>(k), m0.dt.store(), m0.dt.points(),
+                                   m0.inside, part, rules.vertex_tags(), dense);
+    rules.label(sub);
+    actors.push_back(std::make_unique<InsertionActor>(port, std::move(sub), seed, &rules));
   }
   RankResult out;
   RankFigures& f = out.figures;

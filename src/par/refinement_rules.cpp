@@ -10,7 +10,7 @@
 namespace pdr::par {
 
 RefinementRules::RefinementRules(const refine::VolumeMesh& m0, const refine::TetBounds& bounds)
-    : m0_(m0), n0_(m0.dt.num_points()), bounds_(bounds) {
+    : m0_(m0), bounds_(bounds) {
   tags_.reserve(m0.dt.num_points());
   for (VertexId v = 0; v < m0.dt.num_points(); ++v)
     tags_.push_back(static_cast<std::uint8_t>(1 + static_cast<int>(m0.vertex_class(v))));
@@ -29,19 +29,34 @@ Point RefinementRules::point(const Submesh& s, TetId t) const {
   return construct::circumcenter(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
 }
 
+void RefinementRules::label(Submesh& s) const {
+  const refine::SurfaceMesh& d = m0_.surf;
+  const auto local = [&](std::uint32_t dv) {
+    return dv < m0_.s2d.size() && m0_.s2d[dv] != refine::kNone ? s.find_vertex(m0_.s2d[dv])
+                                                                : kNoVertex;
+  };
+  for (const refine::Subsegment& e : d.subsegments()) {
+    const VertexId a = local(e.v[0]), b = local(e.v[1]);
+    if (a != kNoVertex && b != kNoVertex) s.set_edge_label(a, b, e.segment);
+  }
+  for (const refine::Subfacet& f : d.subfacets()) {
+    if (!f.alive) continue;
+    const VertexId a = local(f.v[0]), b = local(f.v[1]), c = local(f.v[2]);
+    if (a != kNoVertex && b != kNoVertex && c != kNoVertex) s.set_face_label(a, b, c, f.facet);
+  }
+}
+
 refine::MaybeId RefinementRules::subsegment(const Submesh& s, VertexId a, VertexId b) const {
   if (!may_be(s.tag(a), kSegment) || !may_be(s.tag(b), kSegment)) return {};
-  const VertexId ga = m0_vertex(s, a), gb = m0_vertex(s, b);
-  if (ga == kNoVertex || gb == kNoVertex) return {};
-  return m0_.subsegment(ga, gb);
+  const std::uint32_t l = s.edge_label(a, b);
+  return l == kNoLabel ? refine::MaybeId{} : refine::MaybeId{l};
 }
 
 refine::MaybeId RefinementRules::subfacet(const Submesh& s, VertexId a, VertexId b,
                                           VertexId c) const {
   if (s.tag(a) == kInterior || s.tag(b) == kInterior || s.tag(c) == kInterior) return {};
-  const VertexId ga = m0_vertex(s, a), gb = m0_vertex(s, b), gc = m0_vertex(s, c);
-  if (ga == kNoVertex || gb == kNoVertex || gc == kNoVertex) return {};
-  return m0_.subfacet(ga, gb, gc);
+  const std::uint32_t l = s.face_label(a, b, c);
+  return l == kNoLabel ? refine::MaybeId{} : refine::MaybeId{l};
 }
 
 // Whether p lies in the closed diametral ball of a subsegment edge of real tet t, or in the

@@ -1,8 +1,7 @@
 // RefinementRules: Fig. 2's step for a tet of a submesh, decided on the root's store
 // (par/step_rules.hpp), while the surface mesh D stays as it was when the mesh was
-// distributed (paper §4 items 1-2: every submesh starts with the subsegments and subfacets
-// of its tets; here every rank reads them from its copy of M_o, since D does not change
-// during the parallel phase).
+// distributed (paper §4 items 1-2: every submesh starts with the subsegments and
+// subfacets of its tets, label() below; they travel with the tets, Submesh M4).
 //
 // A tet is wanted when it is bad (refine/quality.hpp, exact: ratio >= B, or above the size
 // bounds). Its step inserts its circumcenter p. On the complete cavity of p, the step is
@@ -18,8 +17,8 @@
 // conformity rules, as the sequential mesher would. Every committed step is thus a step
 // the sequential mesher may take, on a closure no other commit shares (Lemma 2), so the
 // sequential completion continues a valid run of Fig. 2 and Theorem 2's argument holds.
-// New vertices are never on ∂Ω, so D's lookups need only M_o's vertices (global id = M_o
-// vertex id, below 2^40; par/submesh.hpp).
+// New vertices are never on ∂Ω, so the elements of D are the labelled edges and faces of
+// M_o's vertices, and a committed step labels nothing.
 #pragma once
 
 #include <cstdint>
@@ -57,8 +56,13 @@ class RefinementRules final : public StepRules {
   // phase) is looked up in D like any other.
   std::span<const std::uint8_t> vertex_tags() const { return tags_; }
 
-  // D as seen from submesh s (vertices local to s): the subsegment {a, b}, the subfacet
-  // {a, b, c}; both filter by the vertices' tags first, then look D up in M_o.
+  // Labels submesh s (extracted from M_o) with the elements of D whose vertices it holds:
+  // a subsegment's label is its segment, a subfacet's its facet (Submesh M4).
+  void label(Submesh& s) const;
+
+  // D as seen from submesh s (vertices local to s): the segment of subsegment {a, b}, the
+  // facet of subfacet {a, b, c}; both filter by the vertices' tags first, then read the
+  // submesh's labels.
   refine::MaybeId subsegment(const Submesh& s, VertexId a, VertexId b) const;
   refine::MaybeId subfacet(const Submesh& s, VertexId a, VertexId b, VertexId c) const;
   // False: no edge of the tet with vertices v (of s) is a subsegment and no face a
@@ -70,11 +74,6 @@ class RefinementRules final : public StepRules {
   }
 
  private:
-  // M_o's vertex id of local vertex v, or kNoVertex for a vertex made later (off ∂Ω).
-  VertexId m0_vertex(const Submesh& s, VertexId v) const {
-    const Gid g = s.gid(v);
-    return g < n0_ ? static_cast<VertexId>(g) : kNoVertex;
-  }
   bool encroaches(const Submesh& s, TetId t, const Point& p);
 
   static constexpr std::uint8_t kInterior = 1 + static_cast<int>(refine::VertexClass::Interior);
@@ -82,7 +81,6 @@ class RefinementRules final : public StepRules {
   static bool may_be(std::uint8_t tag, std::uint8_t want) { return tag == 0 || tag == want; }
 
   const refine::VolumeMesh& m0_;
-  const Gid n0_;
   const refine::TetBounds bounds_;
   std::vector<std::uint8_t> tags_;  // per M_o vertex
   DeferCounts deferred_;

@@ -24,6 +24,93 @@ std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
   return static_cast<std::size_t>(h ^ (h >> 31));
 }
 
+namespace {
+
+std::uint64_t edge_key(VertexId a, VertexId b) {
+  if (a > b) std::swap(a, b);
+  return std::uint64_t{a} << 32 | b;
+}
+
+}  // namespace
+
+std::size_t Submesh::TripleHash::operator()(const Triple& k) const {
+  std::uint64_t h = (std::uint64_t{k.v[0]} << 32 | k.v[1]) * 0x9E3779B97F4A7C15ull;
+  h ^= (h >> 29) + k.v[2] * 0xBF58476D1CE4E5B9ull;
+  return static_cast<std::size_t>(h ^ (h >> 32));
+}
+
+std::uint32_t Submesh::edge_label(VertexId a, VertexId b) const {
+  if (!labelled(a) || !labelled(b)) return kNoLabel;
+  const auto it = edge_labels_.find(edge_key(a, b));
+  return it == edge_labels_.end() ? kNoLabel : it->second;
+}
+
+std::uint32_t Submesh::face_label(VertexId a, VertexId b, VertexId c) const {
+  if (!labelled(a) || !labelled(b) || !labelled(c)) return kNoLabel;
+  Triple k{{a, b, c}};
+  std::sort(k.v.begin(), k.v.end());
+  const auto it = face_labels_.find(k);
+  return it == face_labels_.end() ? kNoLabel : it->second;
+}
+
+void Submesh::set_edge_label(VertexId a, VertexId b, std::uint32_t label) {
+  if (label == kNoLabel || a >= points_.size() || b >= points_.size() || a == b)
+    throw std::logic_error("submesh: a label on an edge that cannot have one");
+  const auto [it, fresh] = edge_labels_.try_emplace(edge_key(a, b), label);
+  if (!fresh && it->second != label)
+    throw std::logic_error("submesh: edge " + std::to_string(gid(a)) + "-" +
+                           std::to_string(gid(b)) + " relabelled");
+  labelled_.resize(points_.size(), 0);
+  labelled_[a] = labelled_[b] = 1;
+}
+
+void Submesh::set_face_label(VertexId a, VertexId b, VertexId c, std::uint32_t label) {
+  Triple k{{a, b, c}};
+  std::sort(k.v.begin(), k.v.end());
+  if (label == kNoLabel || k.v[2] >= points_.size() || k.v[0] == k.v[1] || k.v[1] == k.v[2])
+    throw std::logic_error("submesh: a label on a face that cannot have one");
+  const auto [it, fresh] = face_labels_.try_emplace(k, label);
+  if (!fresh && it->second != label)
+    throw std::logic_error("submesh: face " + std::to_string(gid(a)) + "-" +
+                           std::to_string(gid(b)) + "-" + std::to_string(gid(c)) +
+                           " relabelled");
+  labelled_.resize(points_.size(), 0);
+  labelled_[a] = labelled_[b] = labelled_[c] = 1;
+}
+
+VertexId Submesh::find_vertex(Gid g) const {
+  if (g == kGhostGid) return kGhostVertex;
+  if (g < m0_local_.size()) return m0_local_[static_cast<std::size_t>(g)];
+  const auto it = local_.find(g);
+  return it == local_.end() ? kNoVertex : it->second;
+}
+
+void Submesh::collect_labels(std::span<const TetId> tets, Migration& m) const {
+  for (const TetId t : tets) {
+    const VertexId* v = store_.vertices(t);
+    for (const auto& e : tables::kEdgeVertex)
+      if (const std::uint32_t l = edge_label(v[e[0]], v[e[1]]); l != kNoLabel) {
+        EdgeLabel x{{gid(v[e[0]]), gid(v[e[1]])}, l};
+        std::sort(x.v.begin(), x.v.end());
+        m.edge_labels.push_back(x);
+      }
+    for (const auto& f : tables::kFaceVertex)
+      if (const std::uint32_t l = face_label(v[f[0]], v[f[1]], v[f[2]]); l != kNoLabel) {
+        FaceLabel x{{gid(v[f[0]]), gid(v[f[1]]), gid(v[f[2]])}, l};
+        std::sort(x.v.begin(), x.v.end());
+        m.face_labels.push_back(x);
+      }
+  }
+  const auto by_v = [](const auto& a, const auto& b) { return a.v < b.v; };
+  const auto same_v = [](const auto& a, const auto& b) { return a.v == b.v; };
+  std::sort(m.edge_labels.begin(), m.edge_labels.end(), by_v);
+  m.edge_labels.erase(std::unique(m.edge_labels.begin(), m.edge_labels.end(), same_v),
+                      m.edge_labels.end());
+  std::sort(m.face_labels.begin(), m.face_labels.end(), by_v);
+  m.face_labels.erase(std::unique(m.face_labels.begin(), m.face_labels.end(), same_v),
+                      m.face_labels.end());
+}
+
 VertexId Submesh::local_vertex(Gid g, const Point* p, std::uint8_t tag) {
   if (g == kGhostGid) return kGhostVertex;
   VertexId* slot = g < m0_local_.size() ? &m0_local_[static_cast<std::size_t>(g)]
@@ -165,6 +252,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
   Migration m;
   m.from = id_;
   m.to = to;
+  collect_labels(tets, m);
   std::vector<std::pair<TetId, int>> keep_faces;  // kept real tets' faces to close
   std::vector<Side> keep_sides;
   std::vector<TetId> drop;
@@ -218,6 +306,11 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
 std::vector<TetId> Submesh::give(const Migration& m) {
   if (m.to != id_) throw std::logic_error("submesh: a migration for another submesh");
   for (const VertexRecord& v : m.vertices) local_vertex(v.gid, &v.p, v.tag);
+  for (const EdgeLabel& l : m.edge_labels)
+    set_edge_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr), l.label);
+  for (const FaceLabel& l : m.face_labels)
+    set_face_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr),
+                   local_vertex(l.v[2], nullptr), l.label);
   std::vector<TetId> ids;
   ids.reserve(m.tets.size());
   for (const TetRecord& r : m.tets) {

@@ -29,6 +29,13 @@
 //        not seen that move yet keeps the notice until the neighbour arrives. Once every
 //        message is delivered, every proxy's claim is the newest, so it names the holder
 //        of the tet across its face.
+//   (M4) every edge and face of a tet held has the label the mesh gives it (the
+//        refinement's labels are the subsegments and subfacets of the surface mesh D, par/
+//        refinement_rules.hpp: paper §4 item 2, each submesh starts "with the subsegments
+//        and subfacets of its tets"). The caller labels a submesh after extract(); take()
+//        sends the labels of the taken tets' edges and faces with them and give() adds
+//        them. A label once set never changes (the parallel phase does not change D), so
+//        the labels of edges and faces no longer held may stay.
 #pragma once
 
 #include <array>
@@ -53,6 +60,7 @@ inline constexpr Gid kGhostGid = ~Gid{0};       // the ghost vertex, in every su
 inline constexpr Gid kNoGid = ~Gid{0} - 1;
 inline constexpr ActorId kSameMigration = 0xFFFFFFFFu;  // Side::claim.holder: internal
 inline constexpr ActorId kDeleted = 0xFFFFFFFEu;  // moved(): the tet was deleted here
+inline constexpr std::uint32_t kNoLabel = 0xFFFFFFFFu;  // an edge or face without a label
 
 // A face by the global ids of its vertices, sorted (orientation is not part of the key).
 struct FaceKey {
@@ -90,10 +98,22 @@ struct VertexRecord {
   std::uint8_t tag = 0;  // Submesh::tag()
 };
 
+// A label of an edge or a face (M4), by the global ids of its vertices, sorted.
+struct EdgeLabel {
+  std::array<Gid, 2> v{};
+  std::uint32_t label = kNoLabel;
+};
+struct FaceLabel {
+  std::array<Gid, 3> v{};
+  std::uint32_t label = kNoLabel;
+};
+
 struct Migration {
   ActorId from = 0, to = 0;
   std::vector<TetRecord> tets;
   std::vector<VertexRecord> vertices;  // every finite vertex of the tets
+  std::vector<EdgeLabel> edge_labels;  // of the tets' edges and faces, each once
+  std::vector<FaceLabel> face_labels;
 };
 
 // For the submesh `recipient`, believed to hold tet `about` (by a claim of epoch
@@ -139,6 +159,18 @@ class Submesh {
   // travels with the tet, so no rank takes that step up again in the parallel phase.
   bool deferred(TetId t) const { return t < inside_.size() && (inside_[t] & 2) != 0; }
   void mark_deferred(TetId t) { inside_[t] |= 2; }
+  // M4: the label of edge {a, b} and of face {a, b, c} (local vertices), or kNoLabel. A
+  // vertex that no label touches answers at once (one byte per vertex).
+  std::uint32_t edge_label(VertexId a, VertexId b) const;
+  std::uint32_t face_label(VertexId a, VertexId b, VertexId c) const;
+  // Sets a label (not kNoLabel; the ghost vertex has none); setting another label on a
+  // labelled edge or face is a logic error (labels never change, M4).
+  void set_edge_label(VertexId a, VertexId b, std::uint32_t label);
+  void set_face_label(VertexId a, VertexId b, VertexId c, std::uint32_t label);
+  std::size_t labels() const { return edge_labels_.size() + face_labels_.size(); }
+  // The local vertex with global id g, or kNoVertex when it is not here.
+  VertexId find_vertex(Gid g) const;
+
   // What a proxy knows of the tet across it (precondition: t is a live proxy).
   const Side& proxy_side(TetId t) const { return side_.at(t); }
   std::size_t real_tets() const { return store_.live() - proxies_; }
@@ -220,6 +252,20 @@ class Submesh {
   // which are most tets a commit deletes.
   std::vector<std::uint8_t> exposed_;
   std::unordered_map<Gid, std::vector<Relink>> waiting_;  // notices about tets on their way
+  // M4: labels by the sorted local ids of their vertices; per vertex, whether a label
+  // touches it (most do not: the lookups of their edges and faces end there).
+  struct Triple {
+    std::array<VertexId, 3> v{};
+    bool operator==(const Triple&) const = default;
+  };
+  struct TripleHash {
+    std::size_t operator()(const Triple& k) const;
+  };
+  std::unordered_map<std::uint64_t, std::uint32_t> edge_labels_;
+  std::unordered_map<Triple, std::uint32_t, TripleHash> face_labels_;
+  std::vector<std::uint8_t> labelled_;
+  bool labelled(VertexId v) const { return v < labelled_.size() && labelled_[v] != 0; }
+  void collect_labels(std::span<const TetId> tets, Migration& m) const;
 };
 
 }  // namespace pdr::par

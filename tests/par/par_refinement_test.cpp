@@ -104,11 +104,12 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed) {
   std::vector<std::unique_ptr<InsertionActor>> actors;
   for (int r = 0; r < ranks; ++r) {
     rules.push_back(std::make_unique<RefinementRules>(m0, bounds));
-    actors.push_back(std::make_unique<InsertionActor>(
-        net.endpoint(r),
-        Submesh::extract(static_cast<ActorId>(r), m0.dt.store(), m0.dt.points(), m0.inside, part,
-                         rules.back()->vertex_tags(), /*dense=*/seed % 2 == 1),
-        seed, rules.back().get()));
+    Submesh sub = Submesh::extract(static_cast<ActorId>(r), m0.dt.store(), m0.dt.points(),
+                                   m0.inside, part, rules.back()->vertex_tags(),
+                                   /*dense=*/seed % 2 == 1);
+    rules.back()->label(sub);
+    actors.push_back(std::make_unique<InsertionActor>(net.endpoint(r), std::move(sub), seed,
+                                                      rules.back().get()));
     actors.back()->add_wanted_tets();
   }
   const std::uint64_t steps = test::run_to_termination(net, actors, seed, 50'000'000u);
@@ -217,8 +218,9 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
         << "seed " << seed << ": the submeshes are not M_o plus the committed points";
     // Nothing left that the rules would commit: every bad inside tet is deferred.
     RefinementRules whole(m, {2.0, std::nullopt, kTargetVolume});
-    const Submesh one = Submesh::extract(0, s, m.dt.points(), m.inside,
-                                         partition_tets(s, m.inside, 1, seed));
+    Submesh one = Submesh::extract(0, s, m.dt.points(), m.inside,
+                                   partition_tets(s, m.inside, 1, seed));
+    whole.label(one);
     Cavity c;
     CavityBuilder builder;
     std::size_t bad = 0;
@@ -264,8 +266,10 @@ TEST(ParRefinement, VertexTagsChangeNoDecision) {
   const refine::TetBounds bounds{2.0, std::nullopt, kTargetVolume};
   RefinementRules tagged(m, bounds), plain(m, bounds);
   const Partition whole = partition_tets(s, m.inside, 1, 1);
-  const Submesh with = Submesh::extract(0, s, m.dt.points(), m.inside, whole, tagged.vertex_tags());
-  const Submesh without = Submesh::extract(0, s, m.dt.points(), m.inside, whole);
+  Submesh with = Submesh::extract(0, s, m.dt.points(), m.inside, whole, tagged.vertex_tags());
+  Submesh without = Submesh::extract(0, s, m.dt.points(), m.inside, whole);
+  tagged.label(with);
+  plain.label(without);
   // Element by element: the same lookups, and a tet the filter passes over has none.
   std::size_t skipped = 0, in_d = 0;
   for (TetId t = 0; t < with.store().slots(); ++t) {

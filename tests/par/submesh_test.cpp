@@ -3,10 +3,12 @@
 // migrations and relink notices delivered in a seeded random order (FIFO per pair, as
 // MPI). Throughout and at the end: every submesh's store is valid (M2); once everything is
 // delivered, the submeshes hold exactly the original tets, each once, with orientation
-// and inside flag (M1), and every proxy names the submesh that holds its other side (M3).
+// and inside flag (M1), and every proxy names the submesh that holds its other side (M3);
+// every edge and face of a tet held has the label of the surface mesh D (M4).
 #include <gtest/gtest.h>
 
 #include "par/par_world.hpp"
+#include "par/refinement_rules.hpp"
 
 namespace pdr::par {
 namespace {
@@ -38,6 +40,57 @@ TEST(Submesh, RandomMigrationsKeepTheMesh) {
     for (const Submesh& s : w.subs)
       EXPECT_EQ(s.waiting_relinks(), 0u) << "seed " << seed << ": a notice waits for a tet that never came";
     expect_same_mesh(w, "seed " + std::to_string(seed));
+  }
+}
+
+// M4: the submeshes labelled with D's subsegments and subfacets (as the parallel phase
+// does), then random migrations. Each submesh starts with the labels of the vertices it
+// holds, so a tet that reaches a submesh that lacked its vertices is labelled only by what
+// travelled with it.
+TEST(Submesh, LabelsTravelWithTheTets) {
+  const refine::VolumeMesh& vm = test::cube_in_cube();
+  const RefinementRules rules(vm, refine::TetBounds{2.0, std::nullopt, 1.0});
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    World w = cut(2 + static_cast<std::uint32_t>(seed % 4), seed);
+    for (Submesh& s : w.subs) rules.label(s);
+    std::vector<std::size_t> before;
+    for (const Submesh& s : w.subs) before.push_back(s.labels());
+    for (int step = 0; step < 600; ++step)
+      if (w.rng() % 3 == 0 || !w.deliver_one()) w.migrate_some();
+    while (w.deliver_one()) {
+    }
+    std::size_t edges = 0, faces = 0, gained = 0;
+    for (const Submesh& s : w.subs) {
+      gained += s.labels() - before[s.id()];
+      const TetStore& st = s.store();
+      for (TetId t = 0; t < st.slots(); ++t) {
+        if (!st.is_alive(t) || st.is_proxy(t)) continue;
+        const VertexId* v = st.vertices(t);
+        const auto g = [&](int i) { return static_cast<VertexId>(s.gid(v[i])); };
+        for (const auto& e : tables::kEdgeVertex) {
+          if (v[e[0]] == kGhostVertex || v[e[1]] == kGhostVertex) continue;
+          const refine::MaybeId d = vm.subsegment(g(e[0]), g(e[1]));
+          const std::uint32_t want = d ? vm.surf.subsegment(*d).segment : kNoLabel;
+          ASSERT_EQ(s.edge_label(v[e[0]], v[e[1]]), want)
+              << "seed " << seed << ": submesh " << s.id() << ", edge " << g(e[0]) << "-" << g(e[1]);
+          edges += d.has_value();
+        }
+        for (const auto& f : tables::kFaceVertex) {
+          if (v[f[0]] == kGhostVertex || v[f[1]] == kGhostVertex || v[f[2]] == kGhostVertex)
+            continue;
+          const refine::MaybeId d = vm.subfacet(g(f[0]), g(f[1]), g(f[2]));
+          const std::uint32_t want = d ? vm.surf.subfacet(*d).facet : kNoLabel;
+          ASSERT_EQ(s.face_label(v[f[0]], v[f[1]], v[f[2]]), want)
+              << "seed " << seed << ": submesh " << s.id() << ", face " << g(f[0]) << "-"
+              << g(f[1]) << "-" << g(f[2]);
+          faces += d.has_value();
+        }
+      }
+    }
+    // Not vacuous: elements of D checked, and labels that came with migrated tets.
+    EXPECT_GT(edges, 100u) << "seed " << seed;
+    EXPECT_GT(faces, 100u) << "seed " << seed;
+    EXPECT_GT(gained, 10u) << "seed " << seed;
   }
 }
 
