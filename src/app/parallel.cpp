@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -84,10 +85,12 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
       {"seconds", f.seconds},
       {"busy_seconds", f.busy_seconds},
       {"commits", s.commits},
+      {"splits", s.splits},
       {"deferred", {{"outside", f.deferred.outside},
                     {"subsegment", f.deferred.subsegment},
                     {"subfacet", f.deferred.subfacet},
-                    {"removed", f.deferred.removed}}},
+                    {"removed", f.deferred.removed},
+                    {"split_refused", f.deferred.split_refused}}},
       {"setbacks", s.setbacks},
       {"rounds", s.rounds},
       {"fetches_served", s.fetches_served},
@@ -168,6 +171,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
   std::vector<Point> points;  // for `owners`
   std::vector<std::byte> pieces;
+  std::vector<par::SplitRecord> splits;
   std::vector<par::RankFigures> figures;
   par::Partition part;
   // More submeshes than M_o can give (METIS would leave one empty): one per rank instead;
@@ -192,8 +196,10 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
         try {
+          // Subsegment splits in the phase where D's changes are exact (refinement_rules).
           mine = par::refine_part(vm, part, t,
-                                  {opt.ratio, opt.size, opt.max_volume, opt.region_volumes.get()}, seed);
+                                  {opt.ratio, opt.size, opt.max_volume, opt.region_volumes.get()},
+                                  seed, opt.exact_theory);
         } catch (const std::exception& e) {
           // Here, not after the transport's destructor: it would wait for sends and a
           // reduction round that the other ranks, waiting for this one, never complete.
@@ -205,6 +211,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       seconds += timer.lap("parallel");
       if (owners != nullptr) points = par::gather_points(mine.points);
       pieces = par::gather_bytes(mine.pieces);
+      const std::vector<std::byte> split_bytes = par::gather_bytes(std::as_bytes(std::span(mine.splits)));
+      splits.resize(split_bytes.size() / sizeof(par::SplitRecord));
+      if (!split_bytes.empty()) std::memcpy(splits.data(), split_bytes.data(), split_bytes.size());
       figures = par::gather_figures(mine.figures);
       seconds += timer.lap("gather");
     } catch (const std::exception& e) {
@@ -239,7 +248,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     par::Assembly a(vm, pieces.size() / sizeof(par::PieceTet));
     for (par::WireReader r(pieces); !r.done();) a.add(par::get_piece(r));
     std::vector<std::byte>().swap(pieces);
-    assembled = a.finish(vm);
+    assembled = a.finish(vm, splits);
   }
   seconds += timer.lap("assemble");
   std::uint64_t committed = 0;

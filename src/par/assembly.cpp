@@ -6,6 +6,8 @@
 #include <string>
 
 #include "mesh/tables.hpp"
+#include "refine/conformity.hpp"
+#include "surface/split.hpp"
 
 namespace pdr::par {
 
@@ -70,13 +72,20 @@ void Assembly::add(const Piece& p) {
       continue;
     }
     const auto [it, added] = fresh_.try_emplace(v.gid, static_cast<VertexId>(points_.size()));
-    if (added) points_.push_back(v.p);
+    if (added) {
+      points_.push_back(v.p);
+      fresh_tet_.push_back(kNoTet);
+    }
     vmap_.push_back(it->second);
   }
-  const auto vertex = [&](std::uint32_t i) { return i == kGhostVertex ? kGhostVertex : vmap_.at(i); };
+  const auto vertex = [&](std::uint32_t i) {
+    return i == kGhostVertex ? kGhostVertex : vmap_.at(i);
+  };
   ids_.clear();
   for (const PieceTet& x : p.tets) {
     ids_.push_back(st_.create(vertex(x.v[0]), vertex(x.v[1]), vertex(x.v[2]), vertex(x.v[3])));
+    for (const std::uint32_t i : x.v)
+      if (i != kGhostVertex && vmap_[i] >= n0_) fresh_tet_[vmap_[i] - n0_] = ids_.back();
     if (inside_.size() <= ids_.back()) inside_.resize(ids_.back() + 1, 0);
     inside_[ids_.back()] = x.inside & 1;
     if ((x.inside & 2) != 0) out_.deferred.push_back(ids_.back());
@@ -96,7 +105,7 @@ void Assembly::add(const Piece& p) {
     }
 }
 
-Assembled Assembly::finish(refine::VolumeMesh& m) {
+Assembled Assembly::finish(refine::VolumeMesh& m, std::span<const SplitRecord> splits) {
   if (m.dt.num_points() != n0_) throw std::logic_error("assembly: the mesh changed meanwhile");
   // Faces between pieces: each exactly twice.
   std::sort(open_.begin(), open_.end(),
@@ -116,15 +125,52 @@ Assembled Assembly::finish(refine::VolumeMesh& m) {
   m.inside = std::move(inside_);
   for (std::size_t v = n0_; v < n0_ + out_.added; ++v)
     m.map_vertex(static_cast<VertexId>(v), refine::kNone);
+  split_d(m, splits);
   return std::move(out_);
 }
 
-Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces) {
+void Assembly::split_d(refine::VolumeMesh& m, std::span<const SplitRecord> splits) const {
+  std::vector<const SplitRecord*> todo, later;
+  for (const SplitRecord& r : splits) todo.push_back(&r);
+  refine::EncroachedLists missing;
+  std::vector<TetId> star;
+  while (!todo.empty()) {
+    later.clear();
+    for (const SplitRecord* r : todo) {
+      const VertexId a = vertex(r->a), b = vertex(r->b), v = vertex(r->m);
+      if (m.d2s[a] == refine::kNone || m.d2s[b] == refine::kNone) {
+        later.push_back(r);  // an end is the midpoint of a split not made yet
+        continue;
+      }
+      const auto s = m.surf.find_subsegment(m.d2s[a], m.d2s[b]);
+      if (!s)
+        throw std::logic_error("assembly: the phase split a subsegment (vertices " +
+                               std::to_string(a) + ", " + std::to_string(b) +
+                               ") that D does not have");
+      const surface::SplitResult x = surface::split_subsegment_at(m.surf, *s, m.dt.point(v));
+      m.remap_vertex(v, x.vertex);
+    }
+    if (later.size() == todo.size())
+      throw std::logic_error("assembly: splits of subsegments whose ends were never made");
+    todo.swap(later);
+  }
+  // Once D has them all (T has every midpoint already).
+  for (const SplitRecord& r : splits) {
+    const VertexId v = vertex(r.m);
+    refine::vertex_star(m, v, fresh_tet_[v - n0_], star);
+    refine::missing_at(m, v, star, missing);
+  }
+  for (const refine::Encroached& e : missing.subsegments) m.missing_subsegments.push_back(e.id);
+  for (const refine::Encroached& e : missing.subfacets) m.missing_subfacets.push_back(e.id);
+}
+
+Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,
+                   std::span<const SplitRecord> splits) {
   std::size_t tets = 0;
   for (const Piece& p : pieces) tets += p.tets.size();
   Assembly a(m, tets);
   for (const Piece& p : pieces) a.add(p);
-  return a.finish(m);
+  return a.finish(m, splits);
 }
 
 }  // namespace pdr::par

@@ -13,9 +13,17 @@
 //
 // This is the same mesh that inserting the committed points into M_o gives (the Delaunay
 // tetrahedralization of a point set is unique under the symbolic perturbation, and the
-// inside flags change only across subfacets, which the phase never adds or removes): tested tet by
-// tet against that insertion. It costs a pass over the tets instead of a point location
-// and a cavity per committed point.
+// inside flags change only across subfacets): tested tet by tet against that insertion.
+// It costs a pass over the tets instead of a point location and a cavity per committed
+// point.
+//
+// The phase's subsegment splits (par/refinement_rules.hpp) are then made in D with the
+// sequential kernel's operation (surface/split.hpp split_subsegment_at, at the committed
+// point), a split after those that made its ends; the midpoint's vertex is mapped to its
+// D vertex. For the domains the phase splits in (exact constructions on ∂Ω) this is the
+// change the phase made to its labels; an element of D at the midpoint that is not an
+// edge or face of T is listed as missing (VolumeMesh::missing_subfacets), which the
+// completion restores as it restores T_o's (refine/conformity.hpp).
 #pragma once
 
 #include <array>
@@ -24,6 +32,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "par/refinement_rules.hpp"
 #include "par/submesh.hpp"
 #include "par/wire.hpp"
 #include "refine/volume_mesh.hpp"
@@ -60,10 +69,12 @@ struct Assembled {
 
 // Replaces m's tets by the union of `pieces` (the submeshes of a partition of m after the
 // parallel phase): m's vertices keep their ids, the pieces' vertices with global ids from
-// m.dt.num_points() on are appended (off ∂Ω: vclass Interior, no D vertex), the inside
-// flags come with the tets. Throws std::logic_error when the pieces do not glue into a
-// closed mesh (a face left open, or met by more than two tets).
-Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces);
+// m.dt.num_points() on are appended (off ∂Ω, vclass Interior, unless `splits` makes one
+// a subsegment's midpoint), the inside flags come with the tets. Throws
+// std::logic_error when the pieces do not glue into a closed mesh (a face left open, or
+// met by more than two tets), or a split names a subsegment D does not have.
+Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,
+                   std::span<const SplitRecord> splits = {});
 
 // The same, a piece at a time (rank 0 reads the gathered pieces one by one, so that they
 // are never all held twice): Assembly a(m, tets); a.add(piece)...; a.finish(m). `tets`
@@ -72,9 +83,12 @@ class Assembly {
  public:
   Assembly(const refine::VolumeMesh& m, std::size_t tets);
   void add(const Piece& p);
-  Assembled finish(refine::VolumeMesh& m);  // m: the mesh given to the constructor
+  // m: the mesh given to the constructor.
+  Assembled finish(refine::VolumeMesh& m, std::span<const SplitRecord> splits = {});
 
  private:
+  VertexId vertex(Gid g) const { return g < n0_ ? static_cast<VertexId>(g) : fresh_.at(g); }
+  void split_d(refine::VolumeMesh& m, std::span<const SplitRecord> splits) const;
   struct OpenFace {  // a face towards another piece: its vertex ids, sorted
     std::array<VertexId, 3> key;
     HalfFace h;
@@ -82,6 +96,7 @@ class Assembly {
   std::size_t n0_;
   std::vector<Point> points_;
   std::unordered_map<Gid, VertexId> fresh_;  // vertices made in the parallel phase
+  std::vector<TetId> fresh_tet_;             // per vertex made: a tet holding it
   TetStore st_;
   std::vector<std::uint8_t> inside_;
   std::vector<OpenFace> open_;

@@ -26,7 +26,7 @@ InsertionStats& operator+=(InsertionStats& a, const InsertionStats& b) {
   a.commits += b.commits, a.rounds += b.rounds, a.setbacks += b.setbacks;
   a.duplicates += b.duplicates, a.fetches_served += b.fetches_served, a.refused += b.refused;
   a.tets_sent += b.tets_sent, a.points_passed += b.points_passed, a.deferred += b.deferred;
-  a.gone += b.gone, a.local_while_waiting += b.local_while_waiting;
+  a.gone += b.gone, a.local_while_waiting += b.local_while_waiting, a.splits += b.splits;
   a.completed_local_s += b.completed_local_s;
   a.completed_distributed_s += b.completed_distributed_s;
   a.masked_local_s += b.masked_local_s, a.masked_distributed_s += b.masked_distributed_s;
@@ -51,7 +51,7 @@ void InsertionActor::add_wanted_tets() {
 void InsertionActor::want(TetId t) {
   if (rules_ != nullptr && !sub_.store().is_ghost(t) && sub_.inside(t) && !sub_.deferred(t) &&
       rules_->wants(sub_, t))
-    ready_.push_back({Point{}, sub_.tet_gid(t), 0, 0});
+    ready_.push_back({Point{}, sub_.tet_gid(t)});
 }
 
 void InsertionActor::send(int to, Bytes b) { t_.send(to, std::move(b)); }
@@ -146,23 +146,46 @@ bool InsertionActor::local_step(const Waiting& w) {
     parked_.back().parked = rc.kind != RootCavity::Kind::Complete;  // it needs other ranks
     return true;
   }
-  if (complete(rc.cavity, w.tet)) ++stats_.local_while_waiting;
+  if (complete(rc.cavity, w)) ++stats_.local_while_waiting;
   return true;
 }
 
-bool InsertionActor::complete(const Cavity& c, Gid tet) {
-  if (rules_ != nullptr && !rules_->accept(sub_, c)) {
-    ++stats_.deferred;
-    if (const TetId t = sub_.find_tet(tet); t != kNoTet) sub_.mark_deferred(t);
-    return false;
+bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
+  if (rules_ == nullptr) {
+    sub_.insert(c, 0, 0);
+    ++stats_.commits;
+    return true;
   }
-  sub_.insert(c, rules_ != nullptr ? 1 : 0, rules_ != nullptr ? rules_->new_vertex_tag() : 0);
+  if (w.a != kNoGid) {  // a subsegment's midpoint
+    if (!rules_->accept_split(sub_, c, w.a, w.b)) return false;
+    ++stats_.splits;
+  } else {
+    const Verdict v = rules_->accept(sub_, c);
+    if (v.kind == Verdict::Kind::Split) {
+      Waiting split{v.p};
+      split.a = v.a, split.b = v.b, split.near = v.near;
+      if (active_) {  // a local step while the search waits: both wait for its end
+        Waiting again = w;
+        again.parked = true;
+        parked_.push_back(split);
+        parked_.push_back(again);
+      } else {
+        ready_.push_front(w);
+        ready_.push_front(split);
+      }
+      return false;
+    }
+    if (v.kind == Verdict::Kind::Defer) {
+      ++stats_.deferred;
+      if (const TetId t = sub_.find_tet(w.tet); t != kNoTet) sub_.mark_deferred(t);
+      return false;
+    }
+  }
+  rules_->commit(sub_, c);
   ++stats_.commits;
-  if (rules_ != nullptr) {
-    committed_.push_back(c.point);
-    made_.assign(sub_.created().begin(), sub_.created().end());
-    for (const TetId t : made_) want(t);
-  }
+  committed_.push_back(c.point);
+  made_.assign(sub_.created().begin(), sub_.created().end());
+  for (const TetId t : made_) want(t);
   return true;
 }
 
@@ -181,6 +204,15 @@ void InsertionActor::charge_search(double seconds) {
 }
 
 bool InsertionActor::start(Waiting w) {
+  if (w.a != kNoGid) {  // a subsegment's midpoint: from a tet with that edge, or any here
+    TetId from = sub_.find_tet(w.near);
+    if (from == kNoTet) from = any_real_tet();
+    if (from == kNoTet) return false;
+    active_ = true;
+    s_ = Search{next_search_++, w, sub_.tet_gid(from), 0, false, false};
+    round();
+    return true;
+  }
   if (w.tet != kNoGid) {  // a tet's step: from the tet itself, while it is here
     const TetId t = sub_.find_tet(w.tet);
     if (t == kNoTet || sub_.deferred(t)) return false;  // left, or deferred meanwhile
@@ -242,7 +274,7 @@ void InsertionActor::round() {
     finish();
     if (gone)
       ++stats_.gone;
-    else if (complete(rc.cavity, s_.w.tet))
+    else if (complete(rc.cavity, s_.w))
       end_ = End::Commit;
     return;
   }
@@ -318,7 +350,9 @@ void InsertionActor::receive(int, std::span<const std::byte> bytes) {
     }
     case Type::Point: {
       const Point p = r.get<Point>();
-      ready_.push_back({p, kNoGid, r.get<std::uint32_t>(), 0});
+      Waiting w{p};
+      w.setbacks = r.get<std::uint32_t>();
+      ready_.push_back(w);
       break;
     }
   }

@@ -64,6 +64,7 @@ struct InsertionStats {
   std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
                                          // tets that had left when their turn came
   std::uint64_t local_while_waiting = 0;  // steps committed while a search waited
+  std::uint64_t splits = 0;  // commits that split a subsegment (Refine(s))
   // The paper's Table 1, in seconds of this rank (docs/parallel.md says how each is
   // measured): searches that committed, without and with other ranks; work done while a
   // search of this rank waited for replies, its own steps and requests served; searches
@@ -84,7 +85,7 @@ class InsertionActor {
   // refinement.
   InsertionActor(Transport& t, Submesh sub, std::uint64_t seed, StepRules* rules = nullptr);
 
-  void add_point(const Point& p) { ready_.push_back({p, kNoGid, 0, 0}); }
+  void add_point(const Point& p) { ready_.push_back({p}); }
   // Refinement: queues every tet of the submesh the rules want.
   void add_wanted_tets();
   // One loop iteration; true once the run has terminated everywhere.
@@ -104,6 +105,9 @@ class InsertionActor {
   struct Waiting {
     Point p{};
     Gid tet = kNoGid;  // refinement: the tet whose step this is (p is its circumcenter)
+    // Refinement, Refine(s): the subsegment (its ends) whose midpoint p is, and a tet
+    // with that edge where its search starts (tet is kNoGid).
+    Gid a = kNoGid, b = kNoGid, near = kNoGid;
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again
     bool parked = false;     // local_step() found it needs other ranks: not tried
@@ -133,9 +137,10 @@ class InsertionActor {
   // is complete here and touches no locked tet (latency hiding); otherwise w is parked
   // until the search ends. False: w's tet has left (nothing done).
   bool local_step(const Waiting& w);
-  // A complete cavity at this rank: the rules accept it (commit, queue the new tets they
-  // want) or defer it (mark the tet `tet`).
-  bool complete(const Cavity& c, Gid tet);  // true: committed
+  // A complete cavity at this rank for step w: the rules accept it (commit, queue the new
+  // tets they want), defer it (mark w's tet), or ask for a subsegment split first (queued
+  // ahead of w, which is tried again after it).
+  bool complete(const Cavity& c, const Waiting& w);  // true: committed
   // Adds `seconds` to the active search's time; when it has ended (end_), moves its time
   // to the bucket of its outcome.
   void charge_search(double seconds);

@@ -6,14 +6,15 @@
 // r, r + P, ... as its submeshes
 // (par/submesh.hpp) and refines its bad tets with the InsertionActor's protocol and
 // RefinementRules (par/refinement_rules.hpp): distributed cavities pulled to the root,
-// closure locks, setbacks with seeded back-off, termination detection. Steps that would
-// change D (an encroached subsegment or subfacet) or leave Ω are deferred.
+// closure locks, setbacks with seeded back-off, termination detection. With `splits`,
+// subsegments that points encroach are split (Refine(s)); other steps that would change
+// D (an encroached subfacet) or leave Ω are deferred.
 //
 // After termination, rank 0 gathers the submeshes' tets (par/mpi_collect.hpp) and
 // assembles them into the whole mesh in place of its M_o (par/assembly.hpp): M_o plus the
-// committed points, with the same inside flags (every point is off ∂Ω, D has not
-// changed). The sequential refinement (refine/seq_refinement.hpp) then completes the mesh
-// from there.
+// committed points, with their inside flags; it makes the phase's splits in its D
+// (split_d below). The sequential refinement (refine/seq_refinement.hpp) then completes
+// the mesh from there.
 #pragma once
 
 #include <cstdint>
@@ -36,10 +37,12 @@ struct RankFigures {
   std::uint64_t empty_polls = 0, sleeps = 0;
   std::uint64_t start_tets = 0, final_tets = 0;  // real tets of the submesh
   std::uint64_t points = 0;                     // points committed (RankResult::points)
+  std::uint64_t splits = 0;                     // of them, subsegment midpoints
 };
 
 struct RankResult {
   std::vector<Point> points;  // the points this rank committed
+  std::vector<SplitRecord> splits;  // the subsegments it split (a point each, above)
   Bytes pieces;               // its submeshes' tets at the end (par/assembly.hpp), in a row
   RankFigures figures;
 };
@@ -49,6 +52,7 @@ struct RankResult {
 // submeshes as ranks, else the ports of an ActorMux (par/actor_mux.hpp). The figures are
 // the rank's: its actors' summed.
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
-                       const refine::TetBounds& bounds, std::uint64_t seed);
+                       const refine::TetBounds& bounds, std::uint64_t seed,
+                       bool splits = false);
 
 }  // namespace pdr::par

@@ -56,10 +56,7 @@ std::uint32_t Submesh::face_label(VertexId a, VertexId b, VertexId c) const {
 void Submesh::set_edge_label(VertexId a, VertexId b, std::uint32_t label) {
   if (label == kNoLabel || a >= points_.size() || b >= points_.size() || a == b)
     throw std::logic_error("submesh: a label on an edge that cannot have one");
-  const auto [it, fresh] = edge_labels_.try_emplace(edge_key(a, b), label);
-  if (!fresh && it->second != label)
-    throw std::logic_error("submesh: edge " + std::to_string(gid(a)) + "-" +
-                           std::to_string(gid(b)) + " relabelled");
+  edge_labels_[edge_key(a, b)] = label;
   labelled_.resize(points_.size(), 0);
   labelled_[a] = labelled_[b] = 1;
 }
@@ -69,13 +66,35 @@ void Submesh::set_face_label(VertexId a, VertexId b, VertexId c, std::uint32_t l
   std::sort(k.v.begin(), k.v.end());
   if (label == kNoLabel || k.v[2] >= points_.size() || k.v[0] == k.v[1] || k.v[1] == k.v[2])
     throw std::logic_error("submesh: a label on a face that cannot have one");
-  const auto [it, fresh] = face_labels_.try_emplace(k, label);
-  if (!fresh && it->second != label)
-    throw std::logic_error("submesh: face " + std::to_string(gid(a)) + "-" +
-                           std::to_string(gid(b)) + "-" + std::to_string(gid(c)) +
-                           " relabelled");
+  face_labels_[k] = label;
   labelled_.resize(points_.size(), 0);
   labelled_[a] = labelled_[b] = labelled_[c] = 1;
+}
+
+void Submesh::erase_edge_label(VertexId a, VertexId b) { edge_labels_.erase(edge_key(a, b)); }
+
+void Submesh::erase_face_label(VertexId a, VertexId b, VertexId c) {
+  Triple k{{a, b, c}};
+  std::sort(k.v.begin(), k.v.end());
+  face_labels_.erase(k);
+}
+
+void Submesh::install_labels(std::span<const TetId> tets, const Migration& m) {
+  // First drop what this submesh knew of the arriving tets' edges and faces, then set
+  // what came with them (M4).
+  for (const TetId t : tets) {
+    const VertexId* v = store_.vertices(t);
+    for (const auto& e : tables::kEdgeVertex)
+      if (labelled(v[e[0]]) && labelled(v[e[1]])) erase_edge_label(v[e[0]], v[e[1]]);
+    for (const auto& f : tables::kFaceVertex)
+      if (labelled(v[f[0]]) && labelled(v[f[1]]) && labelled(v[f[2]]))
+        erase_face_label(v[f[0]], v[f[1]], v[f[2]]);
+  }
+  for (const EdgeLabel& l : m.edge_labels)
+    set_edge_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr), l.label);
+  for (const FaceLabel& l : m.face_labels)
+    set_face_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr),
+                   local_vertex(l.v[2], nullptr), l.label);
 }
 
 VertexId Submesh::find_vertex(Gid g) const {
@@ -306,11 +325,6 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
 std::vector<TetId> Submesh::give(const Migration& m) {
   if (m.to != id_) throw std::logic_error("submesh: a migration for another submesh");
   for (const VertexRecord& v : m.vertices) local_vertex(v.gid, &v.p, v.tag);
-  for (const EdgeLabel& l : m.edge_labels)
-    set_edge_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr), l.label);
-  for (const FaceLabel& l : m.face_labels)
-    set_face_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr),
-                   local_vertex(l.v[2], nullptr), l.label);
   std::vector<TetId> ids;
   ids.reserve(m.tets.size());
   for (const TetRecord& r : m.tets) {
@@ -322,6 +336,7 @@ std::vector<TetId> Submesh::give(const Migration& m) {
     moved_.erase(r.gid);
     ids.push_back(t);
   }
+  install_labels(ids, m);
   std::vector<std::pair<FaceKey, HalfFace>> internal;  // faces between two of its tets
   for (std::size_t i = 0; i < m.tets.size(); ++i) {
     const TetId t = ids[i];

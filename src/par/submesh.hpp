@@ -33,9 +33,12 @@
 //        refinement's labels are the subsegments and subfacets of the surface mesh D, par/
 //        refinement_rules.hpp: paper §4 item 2, each submesh starts "with the subsegments
 //        and subfacets of its tets"). The caller labels a submesh after extract(); take()
-//        sends the labels of the taken tets' edges and faces with them and give() adds
-//        them. A label once set never changes (the parallel phase does not change D), so
-//        the labels of edges and faces no longer held may stay.
+//        sends the labels of the taken tets' edges and faces with them, and give() makes
+//        the labels of the arriving tets' edges and faces exactly those it got (a label
+//        this submesh kept of an edge it no longer held is dropped, as another submesh
+//        may have changed it since: a commit that splits a subsegment, par/
+//        refinement_rules.hpp). Labels of edges and faces no longer held may stay: no
+//        lookup reads them.
 #pragma once
 
 #include <array>
@@ -159,14 +162,20 @@ class Submesh {
   // travels with the tet, so no rank takes that step up again in the parallel phase.
   bool deferred(TetId t) const { return t < inside_.size() && (inside_[t] & 2) != 0; }
   void mark_deferred(TetId t) { inside_[t] |= 2; }
+  // Sets the inside flag of real tet t (a tet insert() just made: the refinement's flags
+  // of a cavity that crosses ∂Ω).
+  void set_inside(TetId t, bool in) {
+    inside_[t] = static_cast<std::uint8_t>((inside_[t] & ~1) | (in ? 1 : 0));
+  }
   // M4: the label of edge {a, b} and of face {a, b, c} (local vertices), or kNoLabel. A
   // vertex that no label touches answers at once (one byte per vertex).
   std::uint32_t edge_label(VertexId a, VertexId b) const;
   std::uint32_t face_label(VertexId a, VertexId b, VertexId c) const;
-  // Sets a label (not kNoLabel; the ghost vertex has none); setting another label on a
-  // labelled edge or face is a logic error (labels never change, M4).
+  // Sets a label (not kNoLabel; the ghost vertex has none), or erases one.
   void set_edge_label(VertexId a, VertexId b, std::uint32_t label);
   void set_face_label(VertexId a, VertexId b, VertexId c, std::uint32_t label);
+  void erase_edge_label(VertexId a, VertexId b);
+  void erase_face_label(VertexId a, VertexId b, VertexId c);
   std::size_t labels() const { return edge_labels_.size() + face_labels_.size(); }
   // The local vertex with global id g, or kNoVertex when it is not here.
   VertexId find_vertex(Gid g) const;
@@ -266,6 +275,7 @@ class Submesh {
   std::vector<std::uint8_t> labelled_;
   bool labelled(VertexId v) const { return v < labelled_.size() && labelled_[v] != 0; }
   void collect_labels(std::span<const TetId> tets, Migration& m) const;
+  void install_labels(std::span<const TetId> tets, const Migration& m);
 };
 
 }  // namespace pdr::par

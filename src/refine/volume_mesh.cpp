@@ -2,6 +2,7 @@
 #include "refine/volume_mesh.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace pdr::refine {
 
@@ -15,6 +16,16 @@ void VolumeMesh::map_vertex(VertexId v, std::uint32_t surf_vertex) {
                                                        : VertexClass::Segment;
   }
   vclass.push_back(k);
+}
+
+void VolumeMesh::remap_vertex(VertexId v, std::uint32_t surf_vertex) {
+  if (v >= d2s.size() || d2s[v] != kNone)
+    throw std::logic_error("volume: remap of a vertex that is not off the surface");
+  d2s[v] = surf_vertex;
+  if (s2d.size() <= surf_vertex) s2d.resize(surf_vertex + 1, kNone);
+  s2d[surf_vertex] = v;
+  vclass[v] = surf.home(surf_vertex).kind == HomeKind::Facet ? VertexClass::Facet
+                                                             : VertexClass::Segment;
 }
 
 MaybeId VolumeMesh::find_subfacet(VertexId a, VertexId b, VertexId c) const {

@@ -62,6 +62,9 @@ struct VolumeMesh {
   // Records T's vertex v (the next one: v == d2s.size()) as D's vertex surf_vertex
   // (kNone: off ∂Ω), in d2s, s2d and vclass.
   void map_vertex(VertexId v, std::uint32_t surf_vertex);
+  // Maps T's vertex v, recorded off ∂Ω, to D's vertex surf_vertex instead (the parallel
+  // run's subsegment splits, made in D after T: par/assembly.hpp).
+  void remap_vertex(VertexId v, std::uint32_t surf_vertex);
 
   // Ghost and unknown vertices are Interior.
   VertexClass vertex_class(VertexId v) const {
