@@ -37,14 +37,15 @@ double inside_volume(const refine::VolumeMesh& m) {
   return vol;
 }
 
-// The coarse refinement's options: the user's for tets at the boundary (so D is refined
-// about as far as the final mesh needs, and the parallel phase rarely meets it), and for
-// interior tets the size bounds raised: to a volume of about volume / `tets` (0: sixteen
-// times the final volume bound, or 2.5 times the final radius bound, with at most about
-// 100K interior tets, the size the paper started from); never finer than the user asked
-// (no size bound: none here).
+// The coarse refinement's options: for interior tets the size bounds raised, to a volume
+// of about volume / `tets` (0: sixteen times the final volume bound, or 2.5 times the
+// final radius bound, with at most about 100K interior tets, the size the paper started
+// from), never finer than the user asked (no size bound: none here). The same for tets at
+// the boundary when the parallel phase refines D too (`surface_steps`); else the user's
+// bounds there, so that D is refined about as far as the final mesh needs, and the
+// phase, which then defers every step on ∂Ω, rarely meets it.
 refine::RefineOptions coarse_options(const refine::RefineOptions& opt, double volume,
-                                     std::size_t tets) {
+                                     std::size_t tets, bool surface_steps) {
   constexpr double kAutoVolume = 16, kAutoRadius = 2.5, kAutoMaxTets = 100000;
   refine::RefineOptions c = opt;
   c.on_progress = nullptr;
@@ -54,6 +55,7 @@ refine::RefineOptions coarse_options(const refine::RefineOptions& opt, double vo
     in.max_volume = std::max(*in.max_volume * (tets > 0 ? 1 : kAutoVolume), v0);
   if (in.size) in.size = std::max(*in.size * (tets > 0 ? 1 : kAutoRadius), std::cbrt(v0));
   c.interior = in;
+  if (surface_steps) c.max_volume = in.max_volume, c.size = in.size;
   return c;
 }
 
@@ -86,11 +88,12 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
       {"busy_seconds", f.busy_seconds},
       {"commits", s.commits},
       {"splits", s.splits},
+      {"facet_points", s.facet_points},
       {"deferred", {{"outside", f.deferred.outside},
                     {"subsegment", f.deferred.subsegment},
                     {"subfacet", f.deferred.subfacet},
                     {"removed", f.deferred.removed},
-                    {"split_refused", f.deferred.split_refused}}},
+                    {"refused", f.deferred.refused}}},
       {"setbacks", s.setbacks},
       {"rounds", s.rounds},
       {"fetches_served", s.fetches_served},
@@ -158,8 +161,10 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        VertexOwners* owners) {
   const World w = world();
   // M_o: the same on every rank.
-  const refine::RefineResult coarse =
-      refine::refine(vm, coarse_options(opt, inside_volume(vm), initial_tets));
+  // Steps on ∂Ω in the phase where D's changes are exact (par/refinement_rules.hpp).
+  const bool surface_steps = opt.exact_theory;
+  const refine::RefineResult coarse = refine::refine(
+      vm, coarse_options(opt, inside_volume(vm), initial_tets, surface_steps));
   vm.missing_subfacets.clear();  // restored (or reported again by the completion below)
   vm.missing_subsegments.clear();
   const std::size_t m0_tets = vm.inside_tets();
@@ -171,7 +176,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   bool distribute = coarse.stop_reason.empty() && coarse.stats.conformity_refused == 0;
   std::vector<Point> points;  // for `owners`
   std::vector<std::byte> pieces;
-  std::vector<par::SplitRecord> splits;
+  std::vector<par::SurfaceStep> d_steps;  // the phase's steps on ∂Ω, all ranks'
   std::vector<par::RankFigures> figures;
   par::Partition part;
   // More submeshes than M_o can give (METIS would leave one empty): one per rank instead;
@@ -196,10 +201,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
         try {
-          // Subsegment splits in the phase where D's changes are exact (refinement_rules).
           mine = par::refine_part(vm, part, t,
                                   {opt.ratio, opt.size, opt.max_volume, opt.region_volumes.get()},
-                                  seed, opt.exact_theory);
+                                  seed, surface_steps);
         } catch (const std::exception& e) {
           // Here, not after the transport's destructor: it would wait for sends and a
           // reduction round that the other ranks, waiting for this one, never complete.
@@ -211,9 +215,10 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       seconds += timer.lap("parallel");
       if (owners != nullptr) points = par::gather_points(mine.points);
       pieces = par::gather_bytes(mine.pieces);
-      const std::vector<std::byte> split_bytes = par::gather_bytes(std::as_bytes(std::span(mine.splits)));
-      splits.resize(split_bytes.size() / sizeof(par::SplitRecord));
-      if (!split_bytes.empty()) std::memcpy(splits.data(), split_bytes.data(), split_bytes.size());
+      const std::vector<std::byte> step_bytes =
+          par::gather_bytes(std::as_bytes(std::span(mine.surface_steps)));
+      d_steps.resize(step_bytes.size() / sizeof(par::SurfaceStep));
+      if (!step_bytes.empty()) std::memcpy(d_steps.data(), step_bytes.data(), step_bytes.size());
       figures = par::gather_figures(mine.figures);
       seconds += timer.lap("gather");
     } catch (const std::exception& e) {
@@ -248,7 +253,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     par::Assembly a(vm, pieces.size() / sizeof(par::PieceTet));
     for (par::WireReader r(pieces); !r.done();) a.add(par::get_piece(r));
     std::vector<std::byte>().swap(pieces);
-    assembled = a.finish(vm, splits);
+    assembled = a.finish(vm, d_steps);
   }
   seconds += timer.lap("assemble");
   std::uint64_t committed = 0;

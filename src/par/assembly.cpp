@@ -7,6 +7,8 @@
 
 #include "mesh/tables.hpp"
 #include "refine/conformity.hpp"
+#include "surface/cavity.hpp"
+#include "surface/locate.hpp"
 #include "surface/split.hpp"
 
 namespace pdr::par {
@@ -105,7 +107,7 @@ void Assembly::add(const Piece& p) {
     }
 }
 
-Assembled Assembly::finish(refine::VolumeMesh& m, std::span<const SplitRecord> splits) {
+Assembled Assembly::finish(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) {
   if (m.dt.num_points() != n0_) throw std::logic_error("assembly: the mesh changed meanwhile");
   // Faces between pieces: each exactly twice.
   std::sort(open_.begin(), open_.end(),
@@ -125,37 +127,70 @@ Assembled Assembly::finish(refine::VolumeMesh& m, std::span<const SplitRecord> s
   m.inside = std::move(inside_);
   for (std::size_t v = n0_; v < n0_ + out_.added; ++v)
     m.map_vertex(static_cast<VertexId>(v), refine::kNone);
-  split_d(m, splits);
+  change_d(m, steps);
   return std::move(out_);
 }
 
-void Assembly::split_d(refine::VolumeMesh& m, std::span<const SplitRecord> splits) const {
-  std::vector<const SplitRecord*> todo, later;
-  for (const SplitRecord& r : splits) todo.push_back(&r);
-  refine::EncroachedLists missing;
-  std::vector<TetId> star;
+void Assembly::change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const {
+  const auto fail = [](const std::string& what) {
+    throw std::logic_error("assembly: the phase's change of D cannot be made: " + what);
+  };
+  const auto mapped = [&](Gid g) { return m.d2s[vertex(g)] != refine::kNone; };
+  // The splits, each once its ends are in D.
+  std::vector<const SurfaceStep*> todo, later;
+  for (const SurfaceStep& r : steps)
+    if (r.c == kNoGid) todo.push_back(&r);
   while (!todo.empty()) {
     later.clear();
-    for (const SplitRecord* r : todo) {
-      const VertexId a = vertex(r->a), b = vertex(r->b), v = vertex(r->m);
-      if (m.d2s[a] == refine::kNone || m.d2s[b] == refine::kNone) {
+    for (const SurfaceStep* r : todo) {
+      if (!mapped(r->a) || !mapped(r->b)) {
         later.push_back(r);  // an end is the midpoint of a split not made yet
         continue;
       }
+      const VertexId a = vertex(r->a), b = vertex(r->b), v = vertex(r->m);
       const auto s = m.surf.find_subsegment(m.d2s[a], m.d2s[b]);
       if (!s)
-        throw std::logic_error("assembly: the phase split a subsegment (vertices " +
-                               std::to_string(a) + ", " + std::to_string(b) +
-                               ") that D does not have");
+        fail("a split of a subsegment D does not have (vertices " + std::to_string(a) + ", " +
+             std::to_string(b) + ")");
       const surface::SplitResult x = surface::split_subsegment_at(m.surf, *s, m.dt.point(v));
       m.remap_vertex(v, x.vertex);
     }
-    if (later.size() == todo.size())
-      throw std::logic_error("assembly: splits of subsegments whose ends were never made");
+    if (later.size() == todo.size()) fail("splits of subsegments whose ends were never made");
     todo.swap(later);
   }
-  // Once D has them all (T has every midpoint already).
-  for (const SplitRecord& r : splits) {
+  // Then the subfacet circumcenters, located from a vertex of their subfacet in D.
+  for (const SurfaceStep& r : steps)
+    if (r.c != kNoGid) todo.push_back(&r);
+  while (!todo.empty()) {
+    later.clear();
+    for (const SurfaceStep* r : todo) {
+      const Gid* from = nullptr;
+      for (const Gid* g : {&r->a, &r->b, &r->c})
+        if (from == nullptr && mapped(*g)) from = g;
+      if (from == nullptr) {
+        later.push_back(r);  // its subfacet's vertices are all points not made yet
+        continue;
+      }
+      const VertexId v = vertex(r->m);
+      const Point& q = m.dt.point(v);
+      const auto at = surface::locate_in_facet(m.surf, r->facet, q, m.d2s[vertex(*from)]);
+      if (!at || at->on_subsegment) fail("a subfacet circumcenter outside its facet");
+      const surface::FacetCavity cav =
+          surface::build_facet_cavity(m.surf, r->facet, q, {at->subfacet}, std::nullopt);
+      if (cav.status != surface::CavityStatus::Ok)
+        fail(std::string("a subfacet circumcenter's facet cavity is ") +
+             surface::cavity_status_name(cav.status));
+      const std::uint32_t dv = m.surf.add_vertex(q, {surface::HomeKind::Facet, r->facet});
+      surface::commit_facet_cavity(m.surf, cav, dv);
+      m.remap_vertex(v, dv);
+    }
+    if (later.size() == todo.size()) fail("subfacets whose vertices were never made");
+    todo.swap(later);
+  }
+  // Once D has them all (T has every new vertex already).
+  refine::EncroachedLists missing;
+  std::vector<TetId> star;
+  for (const SurfaceStep& r : steps) {
     const VertexId v = vertex(r.m);
     refine::vertex_star(m, v, fresh_tet_[v - n0_], star);
     refine::missing_at(m, v, star, missing);
@@ -165,12 +200,12 @@ void Assembly::split_d(refine::VolumeMesh& m, std::span<const SplitRecord> split
 }
 
 Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,
-                   std::span<const SplitRecord> splits) {
+                   std::span<const SurfaceStep> steps) {
   std::size_t tets = 0;
   for (const Piece& p : pieces) tets += p.tets.size();
   Assembly a(m, tets);
   for (const Piece& p : pieces) a.add(p);
-  return a.finish(m, splits);
+  return a.finish(m, steps);
 }
 
 }  // namespace pdr::par

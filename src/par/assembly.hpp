@@ -17,13 +17,19 @@
 // It costs a pass over the tets instead of a point location and a cavity per committed
 // point.
 //
-// The phase's subsegment splits (par/refinement_rules.hpp) are then made in D with the
-// sequential kernel's operation (surface/split.hpp split_subsegment_at, at the committed
-// point), a split after those that made its ends; the midpoint's vertex is mapped to its
-// D vertex. For the domains the phase splits in (exact constructions on ∂Ω) this is the
-// change the phase made to its labels; an element of D at the midpoint that is not an
-// edge or face of T is listed as missing (VolumeMesh::missing_subfacets), which the
-// completion restores as it restores T_o's (refine/conformity.hpp).
+// The phase's steps on ∂Ω (par/refinement_rules.hpp) are then made in D with the
+// sequential kernel's operations at the committed points: the subsegment splits first
+// (surface/split.hpp split_subsegment_at), each after those that made its ends, then the
+// subfacet circumcenters (located in their facet, surface/locate.hpp, and inserted by a
+// facet cavity, surface/cavity.hpp). The final D does not depend on that order (each
+// facet's triangulation is the Delaunay triangulation of its vertices, unique under the
+// symbolic perturbation), and no circumcenter encroaches a subsegment of the final D
+// (it encroached none of its closure when committed, and later splits only shrink the
+// diametral balls), so every facet cavity is valid. Each new vertex is mapped to its D
+// vertex. For the domains the phase takes these steps in (exact constructions on ∂Ω)
+// this is the change the phase made to its labels; an element of D at a new vertex that
+// is not an edge or face of T is listed as missing (VolumeMesh::missing_subfacets),
+// which the completion restores as it restores T_o's (refine/conformity.hpp).
 #pragma once
 
 #include <array>
@@ -69,12 +75,13 @@ struct Assembled {
 
 // Replaces m's tets by the union of `pieces` (the submeshes of a partition of m after the
 // parallel phase): m's vertices keep their ids, the pieces' vertices with global ids from
-// m.dt.num_points() on are appended (off ∂Ω, vclass Interior, unless `splits` makes one
-// a subsegment's midpoint), the inside flags come with the tets. Throws
-// std::logic_error when the pieces do not glue into a closed mesh (a face left open, or
-// met by more than two tets), or a split names a subsegment D does not have.
+// m.dt.num_points() on are appended (off ∂Ω, vclass Interior, unless `steps` puts one on
+// ∂Ω), the inside flags come with the tets. Throws std::logic_error when the pieces do
+// not glue into a closed mesh (a face left open, or met by more than two tets), or a
+// step cannot be made in D (a split of a subsegment D does not have, a point outside
+// its facet or with an invalid facet cavity).
 Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,
-                   std::span<const SplitRecord> splits = {});
+                   std::span<const SurfaceStep> steps = {});
 
 // The same, a piece at a time (rank 0 reads the gathered pieces one by one, so that they
 // are never all held twice): Assembly a(m, tets); a.add(piece)...; a.finish(m). `tets`
@@ -84,11 +91,11 @@ class Assembly {
   Assembly(const refine::VolumeMesh& m, std::size_t tets);
   void add(const Piece& p);
   // m: the mesh given to the constructor.
-  Assembled finish(refine::VolumeMesh& m, std::span<const SplitRecord> splits = {});
+  Assembled finish(refine::VolumeMesh& m, std::span<const SurfaceStep> steps = {});
 
  private:
   VertexId vertex(Gid g) const { return g < n0_ ? static_cast<VertexId>(g) : fresh_.at(g); }
-  void split_d(refine::VolumeMesh& m, std::span<const SplitRecord> splits) const;
+  void change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const;
   struct OpenFace {  // a face towards another piece: its vertex ids, sorted
     std::array<VertexId, 3> key;
     HalfFace h;

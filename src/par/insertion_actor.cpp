@@ -27,6 +27,7 @@ InsertionStats& operator+=(InsertionStats& a, const InsertionStats& b) {
   a.duplicates += b.duplicates, a.fetches_served += b.fetches_served, a.refused += b.refused;
   a.tets_sent += b.tets_sent, a.points_passed += b.points_passed, a.deferred += b.deferred;
   a.gone += b.gone, a.local_while_waiting += b.local_while_waiting, a.splits += b.splits;
+  a.facet_points += b.facet_points;
   a.completed_local_s += b.completed_local_s;
   a.completed_distributed_s += b.completed_distributed_s;
   a.masked_local_s += b.masked_local_s, a.masked_distributed_s += b.masked_distributed_s;
@@ -156,31 +157,31 @@ bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
     ++stats_.commits;
     return true;
   }
-  if (w.a != kNoGid) {  // a subsegment's midpoint
-    if (!rules_->accept_split(sub_, c, w.a, w.b)) return false;
-    ++stats_.splits;
-  } else {
-    const Verdict v = rules_->accept(sub_, c);
-    if (v.kind == Verdict::Kind::Split) {
-      Waiting split{v.p};
-      split.a = v.a, split.b = v.b, split.near = v.near;
-      if (active_) {  // a local step while the search waits: both wait for its end
+  const Verdict v = w.a != kNoGid ? rules_->accept_surface(sub_, c, w.a, w.b, w.c)
+                                   : rules_->accept(sub_, c);
+  if (v.kind == Verdict::Kind::Split || v.kind == Verdict::Kind::Facet) {
+    Waiting first{v.p};
+    first.a = v.a, first.b = v.b, first.c = v.c, first.near = v.near;
+    if (active_) {  // a local step while the search waits: it waits for the search's end
+      parked_.push_back(first);
+      if (w.a == kNoGid) {
         Waiting again = w;
         again.parked = true;
-        parked_.push_back(split);
         parked_.push_back(again);
-      } else {
-        ready_.push_front(w);
-        ready_.push_front(split);
       }
-      return false;
+    } else {
+      if (w.a == kNoGid) ready_.push_front(w);
+      ready_.push_front(first);
     }
-    if (v.kind == Verdict::Kind::Defer) {
-      ++stats_.deferred;
-      if (const TetId t = sub_.find_tet(w.tet); t != kNoTet) sub_.mark_deferred(t);
-      return false;
-    }
+    return false;
   }
+  if (v.kind == Verdict::Kind::Defer) {
+    if (w.a != kNoGid) return false;  // a step on ∂Ω: dropped (its tet is queued after it)
+    ++stats_.deferred;
+    if (const TetId t = sub_.find_tet(w.tet); t != kNoTet) sub_.mark_deferred(t);
+    return false;
+  }
+  if (w.a != kNoGid) ++(w.c == kNoGid ? stats_.splits : stats_.facet_points);
   rules_->commit(sub_, c);
   ++stats_.commits;
   committed_.push_back(c.point);
@@ -204,7 +205,7 @@ void InsertionActor::charge_search(double seconds) {
 }
 
 bool InsertionActor::start(Waiting w) {
-  if (w.a != kNoGid) {  // a subsegment's midpoint: from a tet with that edge, or any here
+  if (w.a != kNoGid) {  // a step on ∂Ω: from a tet near its element, or any here
     TetId from = sub_.find_tet(w.near);
     if (from == kNoTet) from = any_real_tet();
     if (from == kNoTet) return false;

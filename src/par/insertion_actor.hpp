@@ -64,7 +64,8 @@ struct InsertionStats {
   std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
                                          // tets that had left when their turn came
   std::uint64_t local_while_waiting = 0;  // steps committed while a search waited
-  std::uint64_t splits = 0;  // commits that split a subsegment (Refine(s))
+  std::uint64_t splits = 0;        // commits that split a subsegment (Refine(s))
+  std::uint64_t facet_points = 0;  // commits of a subfacet's circumcenter (Refine(f))
   // The paper's Table 1, in seconds of this rank (docs/parallel.md says how each is
   // measured): searches that committed, without and with other ranks; work done while a
   // search of this rank waited for replies, its own steps and requests served; searches
@@ -105,9 +106,10 @@ class InsertionActor {
   struct Waiting {
     Point p{};
     Gid tet = kNoGid;  // refinement: the tet whose step this is (p is its circumcenter)
-    // Refinement, Refine(s): the subsegment (its ends) whose midpoint p is, and a tet
-    // with that edge where its search starts (tet is kNoGid).
-    Gid a = kNoGid, b = kNoGid, near = kNoGid;
+    // Refinement, a step on ∂Ω (tet is kNoGid): the subsegment {a, b} whose midpoint p
+    // is (c is kNoGid), or the subfacet {a, b, c} whose circumcenter it is, and a tet near
+    // it where its search starts.
+    Gid a = kNoGid, b = kNoGid, c = kNoGid, near = kNoGid;
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again
     bool parked = false;     // local_step() found it needs other ranks: not tried
@@ -138,8 +140,8 @@ class InsertionActor {
   // until the search ends. False: w's tet has left (nothing done).
   bool local_step(const Waiting& w);
   // A complete cavity at this rank for step w: the rules accept it (commit, queue the new
-  // tets they want), defer it (mark w's tet), or ask for a subsegment split first (queued
-  // ahead of w, which is tried again after it).
+  // tets they want), defer it (mark w's tet; a step on ∂Ω is dropped), or ask for a step
+  // on ∂Ω first (queued ahead of w's tet, which is tried again after it).
   bool complete(const Cavity& c, const Waiting& w);  // true: committed
   // Adds `seconds` to the active search's time; when it has ended (end_), moves its time
   // to the bucket of its outcome.

@@ -12,9 +12,9 @@
 namespace pdr::par {
 
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
-                       const refine::TetBounds& bounds, std::uint64_t seed, bool splits) {
+                       const refine::TetBounds& bounds, std::uint64_t seed, bool surface_steps) {
   using Clock = std::chrono::steady_clock;
-  RefinementRules rules(m0, bounds, splits);
+  RefinementRules rules(m0, bounds, surface_steps);
   // One actor per submesh of this rank: with N == P the rank's transport itself, else the
   // ports of a mux (par/actor_mux.hpp).
   const int n = static_cast<int>(part.parts);
@@ -75,8 +75,8 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   f.empty_polls = idle.empty_iterations();
   f.sleeps = idle.sleeps();
   f.points = out.points.size();
-  out.splits = rules.splits();
-  f.splits = out.splits.size();
+  out.surface_steps = rules.surface_steps();
+  f.surface_points = out.surface_steps.size();
   out.pieces = pieces.take();
   return out;
 }

@@ -6,14 +6,14 @@
 // r, r + P, ... as its submeshes
 // (par/submesh.hpp) and refines its bad tets with the InsertionActor's protocol and
 // RefinementRules (par/refinement_rules.hpp): distributed cavities pulled to the root,
-// closure locks, setbacks with seeded back-off, termination detection. With `splits`,
-// subsegments that points encroach are split (Refine(s)); other steps that would change
-// D (an encroached subfacet) or leave Ω are deferred.
+// closure locks, setbacks with seeded back-off, termination detection. With
+// `surface_steps`, encroached subsegments and subfacets are refined there too (Refine(s),
+// Refine(f)); else the steps that would change D, and those that leave Ω, are deferred.
 //
 // After termination, rank 0 gathers the submeshes' tets (par/mpi_collect.hpp) and
 // assembles them into the whole mesh in place of its M_o (par/assembly.hpp): M_o plus the
-// committed points, with their inside flags; it makes the phase's splits in its D
-// (split_d below). The sequential refinement (refine/seq_refinement.hpp) then completes
+// committed points, with their inside flags; it makes the phase's changes to D in its
+// own. The sequential refinement (refine/seq_refinement.hpp) then completes
 // the mesh from there.
 #pragma once
 
@@ -37,12 +37,12 @@ struct RankFigures {
   std::uint64_t empty_polls = 0, sleeps = 0;
   std::uint64_t start_tets = 0, final_tets = 0;  // real tets of the submesh
   std::uint64_t points = 0;                     // points committed (RankResult::points)
-  std::uint64_t splits = 0;                     // of them, subsegment midpoints
+  std::uint64_t surface_points = 0;             // of them, on ∂Ω
 };
 
 struct RankResult {
   std::vector<Point> points;  // the points this rank committed
-  std::vector<SplitRecord> splits;  // the subsegments it split (a point each, above)
+  std::vector<SurfaceStep> surface_steps;  // its steps on ∂Ω (a point each, above)
   Bytes pieces;               // its submeshes' tets at the end (par/assembly.hpp), in a row
   RankFigures figures;
 };
@@ -53,6 +53,6 @@ struct RankResult {
 // the rank's: its actors' summed.
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
                        const refine::TetBounds& bounds, std::uint64_t seed,
-                       bool splits = false);
+                       bool surface_steps = false);
 
 }  // namespace pdr::par

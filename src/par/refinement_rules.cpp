@@ -5,13 +5,15 @@
 
 #include "geom/construct.hpp"
 #include "geom/encroach.hpp"
+#include "refine/closure.hpp"
+#include "surface/chart.hpp"
 #include "mesh/tables.hpp"
 
 namespace pdr::par {
 
 RefinementRules::RefinementRules(const refine::VolumeMesh& m0, const refine::TetBounds& bounds,
-                                 bool splits)
-    : m0_(m0), bounds_(bounds), splits_enabled_(splits) {
+                                 bool surface_steps)
+    : m0_(m0), bounds_(bounds), surface_steps_enabled_(surface_steps) {
   tags_.reserve(m0.dt.num_points());
   for (VertexId v = 0; v < m0.dt.num_points(); ++v)
     tags_.push_back(static_cast<std::uint8_t>(1 + static_cast<int>(m0.vertex_class(v))));
@@ -61,60 +63,88 @@ refine::MaybeId RefinementRules::subfacet(const Submesh& s, VertexId a, VertexId
 }
 
 std::optional<std::array<VertexId, 2>> RefinementRules::encroached_subsegment(
-    const Submesh& s, TetId t, const Point& p) const {
+    const Submesh& s, std::initializer_list<const std::vector<TetId>*> tets,
+    const Point& p) const {
   const TetStore& st = s.store();
-  if (st.is_ghost(t) || st.is_proxy(t)) return std::nullopt;
-  const VertexId* v = st.vertices(t);
-  if (!may_touch_d(s, v)) return std::nullopt;
   const auto pts = s.points();
-  for (const auto& e : tables::kEdgeVertex)
-    if (subsegment(s, v[e[0]], v[e[1]]) &&
-        in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative)
-      return std::array<VertexId, 2>{v[e[0]], v[e[1]]};
+  for (const auto* list : tets)
+    for (const TetId t : *list) {
+      if (st.is_ghost(t) || st.is_proxy(t)) continue;
+      const VertexId* v = st.vertices(t);
+      if (!may_touch_d(s, v)) continue;
+      for (const auto& e : tables::kEdgeVertex)
+        if (subsegment(s, v[e[0]], v[e[1]]) &&
+            in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative)
+          return std::array<VertexId, 2>{v[e[0]], v[e[1]]};
+    }
   return std::nullopt;
 }
 
-bool RefinementRules::encroaches_subfacet(const Submesh& s, TetId t, const Point& p) const {
+std::optional<std::array<VertexId, 3>> RefinementRules::encroached_subfacet(
+    const Submesh& s, const Cavity& c) const {
   const TetStore& st = s.store();
-  if (st.is_ghost(t) || st.is_proxy(t)) return false;
-  const VertexId* v = st.vertices(t);
-  if (!may_touch_d(s, v)) return false;
   const auto pts = s.points();
-  for (const auto& f : tables::kFaceVertex)
-    if (subfacet(s, v[f[0]], v[f[1]], v[f[2]]) &&
-        in_equatorial_ball(pts[v[f[0]]], pts[v[f[1]]], pts[v[f[2]]], p) != Sign::Negative)
-      return true;
-  return false;
+  std::optional<std::array<VertexId, 3>> best;
+  std::array<Point, 3> best_p{};
+  for (const auto* list : {&c.conflict, &c.ring})
+    for (const TetId t : *list) {
+      if (st.is_ghost(t) || st.is_proxy(t)) continue;
+      const VertexId* v = st.vertices(t);
+      if (!may_touch_d(s, v)) continue;
+      for (const auto& f : tables::kFaceVertex) {
+        const std::array<VertexId, 3> x{v[f[0]], v[f[1]], v[f[2]]};
+        if (!subfacet(s, x[0], x[1], x[2])) continue;
+        const std::array<Point, 3> q{pts[x[0]], pts[x[1]], pts[x[2]]};
+        if (in_equatorial_ball(q[0], q[1], q[2], c.point) == Sign::Negative) continue;
+        if (!best || refine::larger_subfacet(q, best_p)) best = x, best_p = q;
+      }
+    }
+  return best;
+}
+
+RefinementRules::Key RefinementRules::key(const Submesh& s, std::array<VertexId, 3> v) const {
+  Key k{s.gid(v[0]), s.gid(v[1]), v[2] == kNoVertex ? kNoGid : s.gid(v[2])};
+  std::sort(k.begin(), k.end());  // kNoGid, the largest, last
+  return k;
+}
+
+Point RefinementRules::facet_point(const Submesh& s, const std::array<VertexId, 3>& v,
+                                   std::uint32_t facet) const {
+  const auto pts = s.points();
+  std::array<Point, 3> q{pts[v[0]], pts[v[1]], pts[v[2]]};
+  std::sort(q.begin(), q.end());  // the same point whichever tet names the subfacet
+  return surface::place_on_facet(m0_.surf.facets[facet].chart,
+                                 construct::triangle_circumcenter(q[0], q[1], q[2]));
+}
+
+Verdict RefinementRules::refine_element(const Submesh& s, std::array<VertexId, 3> v,
+                                        TetId near) {
+  const bool facet = v[2] != kNoVertex;
+  const Key k = key(s, v);
+  if (!surface_steps_enabled_ || refused_.count(k) != 0) {
+    ++(facet ? deferred_.subfacet : deferred_.subsegment);
+    return {};
+  }
+  const auto pts = s.points();
+  Verdict out{facet ? Verdict::Kind::Facet : Verdict::Kind::Split, k[0], k[1], k[2]};
+  out.p = facet ? facet_point(s, v, *subfacet(s, v[0], v[1], v[2]))
+                : construct::midpoint(pts[v[0]], pts[v[1]]);
+  out.near = s.tet_gid(near);
+  return out;
 }
 
 Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
-  plan_.active = false;
+  plan_.kind = Plan::Kind::None;
   const TetStore& st = s.store();
-  // Fig. 2: an encroached subsegment first.
-  for (const auto* tets : {&c.conflict, &c.ring})
-    for (const TetId t : *tets)
-      if (const auto e = encroached_subsegment(s, t, c.point)) {
-        Gid a = s.gid((*e)[0]), b = s.gid((*e)[1]);
-        if (a > b) std::swap(a, b);
-        if (!splits_enabled_ || refused_.count({a, b}) != 0) {
-          ++deferred_.subsegment;
-          return {};
-        }
-        const auto pts = s.points();
-        return {Verdict::Kind::Split, a, b, construct::midpoint(pts[(*e)[0]], pts[(*e)[1]]),
-                s.tet_gid(t)};
-      }
+  // Fig. 2: an encroached subsegment first, then the largest encroached subfacet.
+  if (const auto e = encroached_subsegment(s, {&c.conflict, &c.ring}, c.point))
+    return refine_element(s, {(*e)[0], (*e)[1], kNoVertex}, c.seed);
+  if (const auto f = encroached_subfacet(s, c)) return refine_element(s, *f, c.seed);
   for (const TetId t : c.conflict)
     if (st.is_ghost(t) || !s.inside(t)) {
       ++deferred_.outside;
       return {};
     }
-  for (const auto* tets : {&c.conflict, &c.ring})
-    for (const TetId t : *tets)
-      if (encroaches_subfacet(s, t, c.point)) {
-        ++deferred_.subfacet;
-        return {};
-      }
   for (const TetId t : c.conflict) {
     // A subfacet face of a conflict tet survives only on the boundary (between two inside
     // conflict tets lies an internal facet, domain/domain.hpp, which the cavity would take
@@ -166,20 +196,51 @@ Edge edge(VertexId a, VertexId b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 
 }  // namespace
 
-bool RefinementRules::accept_split(const Submesh& s, const Cavity& c, Gid ga, Gid gb) {
-  plan_ = SplitPlan{};
-  const VertexId a = s.find_vertex(ga), b = s.find_vertex(gb);
-  if (a == kNoVertex || b == kNoVertex) return false;  // not here: split elsewhere
-  const refine::MaybeId seg = subsegment(s, a, b);
-  if (!seg) return false;  // split already
-  const auto pts = s.points();
-  if (!(construct::midpoint(pts[a], pts[b]) == c.point)) return false;
-  const TetStore& st = s.store();
-  const auto refuse = [&] {
-    refused_.insert({std::min(ga, gb), std::max(ga, gb)});
-    ++deferred_.split_refused;
-    return false;
+Verdict RefinementRules::accept_surface(const Submesh& s, const Cavity& c, Gid ga, Gid gb,
+                                        Gid gc) {
+  plan_ = Plan{};
+  const bool facet_step = gc != kNoGid;
+  const VertexId a = s.find_vertex(ga), b = s.find_vertex(gb),
+                 cc = facet_step ? s.find_vertex(gc) : kNoVertex;
+  // Dropped when the element is gone (another step changed D meanwhile: the tet whose
+  // step this was is tried again) or its point is not this one.
+  if (a == kNoVertex || b == kNoVertex || (facet_step && cc == kNoVertex)) return {};
+  const std::array<VertexId, 3> v{a, b, cc};
+  const auto refuse = [&]() -> Verdict {
+    refused_.insert(key(s, v));
+    ++deferred_.refused;
+    return {};
   };
+  if (!facet_step) {
+    const refine::MaybeId seg = subsegment(s, a, b);
+    const auto pts = s.points();
+    if (!seg || construct::midpoint(pts[a], pts[b]) != c.point) return {};
+    const std::vector<std::uint32_t>& facets = m0_.surf.segments[*seg].facets;
+    if (!plan(s, c, std::array<VertexId, 2>{a, b}, facets, nullptr)) return refuse();
+    plan_.kind = Plan::Kind::Split;
+    plan_.label = *seg;
+  } else {
+    const refine::MaybeId f = subfacet(s, a, b, cc);
+    if (!f || facet_point(s, v, *f) != c.point) return {};
+    // Fig. 2: a subfacet circumcenter that encroaches a subsegment refines it instead.
+    if (const auto e = encroached_subsegment(s, {&c.conflict, &c.ring}, c.point)) {
+      const Verdict split = refine_element(s, {(*e)[0], (*e)[1], kNoVertex}, c.seed);
+      return split.kind == Verdict::Kind::Split ? split : refuse();
+    }
+    const std::uint32_t only[1] = {*f};
+    if (!plan(s, c, std::nullopt, only, &v)) return refuse();
+    plan_.kind = Plan::Kind::Facet;
+    plan_.label = *f;
+  }
+  plan_.element = {ga, gb, gc};
+  return {Verdict::Kind::Commit};
+}
+
+bool RefinementRules::plan(const Submesh& s, const Cavity& c,
+                           std::optional<std::array<VertexId, 2>> split,
+                           std::span<const std::uint32_t> facets,
+                           const std::array<VertexId, 3>* subfacet_removed) {
+  const TetStore& st = s.store();
   // The cavity's boundary: its edges, and the inside flag each new tet gets.
   std::vector<Edge> boundary_edges;
   std::vector<std::pair<Edge, std::uint8_t>> flag_at_edge;  // per boundary face's edge
@@ -201,9 +262,10 @@ bool RefinementRules::accept_split(const Submesh& s, const Cavity& c, Gid ga, Gi
   const auto on_boundary = [&](const Edge& e) {
     return std::binary_search(boundary_edges.begin(), boundary_edges.end(), e);
   };
-  if (on_boundary(edge(a, b))) return refuse();  // ab would stay
+  // The subsegment split, or an edge that no tet has.
+  const Edge ab = split ? edge((*split)[0], (*split)[1]) : Edge{kNoVertex, kNoVertex};
+  if (split && on_boundary(ab)) return false;  // ab would stay
   // Subsegments and subfacets the cavity removes.
-  const std::vector<std::uint32_t>& facets = m0_.surf.segments[*seg].facets;
   std::vector<std::pair<std::array<VertexId, 3>, std::uint32_t>> removed;
   bool has_ab = false;
   for (const TetId t : c.conflict) {
@@ -212,26 +274,33 @@ bool RefinementRules::accept_split(const Submesh& s, const Cavity& c, Gid ga, Gi
     for (const auto& e : tables::kEdgeVertex) {
       if (!subsegment(s, v[e[0]], v[e[1]])) continue;
       const Edge x = edge(v[e[0]], v[e[1]]);
-      if (x == edge(a, b))
+      if (x == ab)
         has_ab = true;
       else if (!on_boundary(x))
-        return refuse();  // another subsegment would go
+        return false;  // another subsegment would go
     }
     for (int f = 0; f < 4; ++f) {
       const auto& fv = tables::kFaceVertex[f];
       const refine::MaybeId sf = subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]);
       if (!sf || std::find(c.boundary.begin(), c.boundary.end(), half_face(t, f)) != c.boundary.end())
         continue;
-      if (!std::binary_search(facets.begin(), facets.end(), *sf)) return refuse();
+      if (std::find(facets.begin(), facets.end(), *sf) == facets.end()) return false;
       std::array<VertexId, 3> k{v[fv[0]], v[fv[1]], v[fv[2]]};
       std::sort(k.begin(), k.end());
       removed.emplace_back(k, *sf);
     }
   }
-  if (!has_ab) return refuse();
+  if (split && !has_ab) return false;
   std::sort(removed.begin(), removed.end());
   removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
-  // Each facet's region: its boundary edges, ab excepted, fan out from m.
+  if (subfacet_removed != nullptr) {
+    std::array<VertexId, 3> k = *subfacet_removed;
+    std::sort(k.begin(), k.end());
+    if (std::find_if(removed.begin(), removed.end(), [&](const auto& r) { return r.first == k; }) ==
+        removed.end())
+      return false;  // the subfacet would stay
+  }
+  // Each facet's region: its boundary edges (ab excepted) fan out from the new vertex.
   std::vector<std::pair<std::pair<std::uint32_t, Edge>, int>> count;
   for (const auto& [k, f] : removed)
     for (int i = 0; i < 3; ++i) count.push_back({{f, edge(k[i], k[(i + 1) % 3])}, 1});
@@ -240,38 +309,36 @@ bool RefinementRules::accept_split(const Submesh& s, const Cavity& c, Gid ga, Gi
     std::size_t j = i;
     while (j < count.size() && count[j].first == count[i].first) ++j;
     const auto& [f, e] = count[i].first;
-    if (j - i == 1 && e != edge(a, b)) {
-      if (!on_boundary(e)) return refuse();
+    if (j - i == 1 && e != ab) {
+      if (!on_boundary(e)) return false;
       plan_.fan.push_back({{e.first, e.second}, f});
     } else if (j - i > 2) {
-      return refuse();
+      return false;
     }
     i = j;
   }
-  // Inside flags: across each new face (m, e), e an edge of two boundary faces, they
-  // change exactly when (m, e) is a new subfacet of a separating facet.
+  // Inside flags: across each new face (q, e), e an edge of two boundary faces, they
+  // change exactly when (q, e) is a new subfacet of a separating facet.
   std::sort(flag_at_edge.begin(), flag_at_edge.end());
   for (std::size_t i = 0; i < flag_at_edge.size(); i += 2) {
     if (i + 1 == flag_at_edge.size() || flag_at_edge[i].first != flag_at_edge[i + 1].first)
-      return refuse();
+      return false;
     const Edge& e = flag_at_edge[i].first;
     bool flips = false;
     for (const auto& [x, f] : plan_.fan)
       if (Edge{x[0], x[1]} == e && separates(f)) flips = true;
-    if ((flag_at_edge[i].second != flag_at_edge[i + 1].second) != flips) return refuse();
+    if ((flag_at_edge[i].second != flag_at_edge[i + 1].second) != flips) return false;
   }
-  plan_.active = true;
-  plan_.a = a;
-  plan_.b = b;
-  plan_.segment = *seg;
+  if (split) plan_.a = (*split)[0], plan_.b = (*split)[1];
   for (const auto& [k, f] : removed) plan_.removed.push_back(k);
   return true;
 }
 
 VertexId RefinementRules::commit(Submesh& s, const Cavity& c) {
-  if (!plan_.active) return s.insert(c, 1, kInterior);
-  plan_.active = false;
-  const VertexId m = s.insert(c, 0, kSegment);
+  if (plan_.kind == Plan::Kind::None) return s.insert(c, 1, kInterior);
+  const bool split = plan_.kind == Plan::Kind::Split;
+  plan_.kind = Plan::Kind::None;
+  const VertexId m = s.insert(c, 0, split ? kSegment : kFacet);
   const TetStore& st = s.store();
   for (const TetId t : s.created()) {
     int i = 0;
@@ -284,12 +351,15 @@ VertexId RefinementRules::commit(Submesh& s, const Cavity& c) {
       in = !in;
     s.set_inside(t, in);
   }
-  s.erase_edge_label(plan_.a, plan_.b);
-  s.set_edge_label(plan_.a, m, plan_.segment);
-  s.set_edge_label(m, plan_.b, plan_.segment);
+  if (split) {
+    s.erase_edge_label(plan_.a, plan_.b);
+    s.set_edge_label(plan_.a, m, plan_.label);
+    s.set_edge_label(m, plan_.b, plan_.label);
+  }
   for (const auto& k : plan_.removed) s.erase_face_label(k[0], k[1], k[2]);
   for (const auto& [e, f] : plan_.fan) s.set_face_label(m, e[0], e[1], f);
-  splits_.push_back({s.gid(plan_.a), s.gid(plan_.b), s.gid(m), c.point});
+  steps_.push_back({plan_.element[0], plan_.element[1], plan_.element[2], s.gid(m), c.point,
+                    split ? 0u : plan_.label});
   return m;
 }
 

@@ -4,40 +4,47 @@
 // M4).
 //
 // A tet is wanted when it is bad (refine/quality.hpp, exact: ratio >= B, or above the size
-// bounds). Its step inserts its circumcenter p. On the complete cavity of p (accept()):
+// bounds). Its step inserts its circumcenter p. On the complete cavity of p (accept()),
+// as Fig. 2, with the same exact predicates as the sequential step (refine/closure.hpp):
 //   - p in the closed diametral ball of a subsegment that is an edge of a closure tet:
-//     with `splits`, Refine(s): the subsegment's midpoint m is searched and committed as
-//     a step of its own (accept_split(), below), and the tet is tried again after it;
-//     without, the step is deferred;
-//   - else the step is committed only when it is Fig. 2's "insert p" case: every conflict
-//     tet lies inside Ω (so p does); p in no closed equatorial ball of a subfacet that is
-//     a face of a closure tet (the same exact predicates as the sequential step,
-//     refine/closure.hpp); no subsegment that is an edge of a conflict tet, and no
-//     subfacet that is a face of one, disappears.
-// Otherwise the step is deferred: the tet stays, and the sequential completion on rank 0
-// (docs/parallel.md) takes it up with Fig. 2's Refine(f), the guards and the conformity
-// rules, as the sequential mesher would.
+//     Refine(s), its midpoint;
+//   - else p in the closed equatorial ball of a subfacet that is a face of a closure tet:
+//     Refine(f) for the largest such subfacet (exact comparison, refine/closure.hpp's
+//     rule), its circumcenter placed on the facet's plane as the sequential kernel
+//     places it (surface/insert.hpp);
+//   - else the step is committed when every conflict tet lies inside Ω (so p does) and
+//     no subsegment that is an edge of a conflict tet, and no subfacet that is a face of
+//     one, disappears; otherwise it is deferred.
+// With `surface_steps` (a domain whose constructions on ∂Ω are exact: below), Refine(s)
+// and Refine(f) are steps of their own: the new point is searched and committed like a
+// circumcenter (accept_surface()), and the tet is tried again after it; a subfacet
+// circumcenter that encroaches a subsegment of its closure refines that subsegment
+// instead (Fig. 2). Without, they are deferred: the tet stays, marked, and the sequential
+// completion on rank 0 (docs/parallel.md) takes it up with the guards and conformity
+// rules of the sequential mesher.
 //
-// Refine(s) in the parallel phase (accept_split, commit). Every tet with edge ab holds
-// the midpoint m in its circumsphere (a chord's midpoint lies inside every sphere
-// through its ends), so the whole star of ab is in m's cavity, local at the root once the
-// cavity is complete, and so is every subfacet m changes: a subfacet whose circumcircle
-// holds m (a point of its plane) has both its tets in conflict. From the labels: the
-// subfacets removed are the labelled faces inside the cavity; in each facet F they form
-// a region whose boundary edges xy (edges of one removed subfacet only), ab excepted,
-// give F's new subfacets (m, x, y), faces of the new tets since xy lies on the cavity's
-// boundary; ab gives (a, m) and (m, b). The split is committed only when this holds
-// exactly: ab is removed and no other subsegment is; the subfacets removed are of facets
-// containing ab's segment; each boundary edge xy is an edge of the cavity's boundary; the
-// new tets' inside flags (each the flag of its old neighbour, toggled across a subfacet
-// of a facet with Ω on one side, as refine/volume_mesh.hpp commit_point) change across
-// a new face exactly when it is a new subfacet of such a facet. Otherwise (rounding off
-// exact geometry) the split is refused, remembered, and later tets whose points encroach
-// that subsegment are deferred: the completion splits it with the sequential kernel.
-// This is Fig. 2's Refine(s) for domains without acute angles, where the midpoint is
-// the split point (refine/split.hpp: no guard); the caller enables it only there. The
-// splits are recorded (splits()) so that rank 0 makes the same changes to its D after
-// the assembly.
+// A step on ∂Ω changes D, and every change lies in its cavity, so it is local at the root
+// once the cavity is complete. A midpoint m of subsegment ab lies in the circumsphere of
+// every tet with edge ab (a chord's midpoint is inside every sphere through its ends), so
+// ab's star is in the cavity; a subfacet whose circumcircle holds the new point q (a
+// point of its plane) has both its tets in conflict. From the labels: the subfacets
+// removed are the labelled faces inside the cavity; in each facet they form a region
+// whose boundary edges xy (edges of one removed subfacet only; for a split, ab excepted)
+// give the facet's new subfacets (q, x, y), faces of the new tets since xy lies on the
+// cavity's boundary; a split turns ab into (a, m) and (m, b). The step is committed only
+// when this holds exactly: for a split ab is removed and no other subsegment is, the
+// subfacets removed are of facets containing ab's segment; for a subfacet's circumcenter
+// no subsegment is removed, the subfacet is, and every subfacet removed is of its facet;
+// each boundary edge xy is an edge of the cavity's boundary; and the new tets' inside
+// flags (each the flag of its old neighbour, toggled across a subfacet of a facet with Ω
+// on one side, as refine/volume_mesh.hpp commit_point) change across a new face exactly
+// when it is a new subfacet of such a facet. Otherwise (rounding, off exact geometry) the
+// step is refused, the element remembered, and later tets whose points need it are
+// deferred to the completion. The caller enables these steps only for domains where
+// every construction on ∂Ω is exact (RefineOptions::exact_theory: admissible, so every
+// split is the midpoint, refine/split.hpp, and every facet parallel to a coordinate
+// plane). The steps are recorded (surface_steps()) so that rank 0 makes the same
+// changes to its D after the assembly (par/assembly.hpp).
 // Every committed step is thus a step the sequential mesher may take, on a closure no
 // other commit shares (Lemma 2), so the sequential completion continues a valid run of
 // Fig. 2 and Theorem 2's argument holds.
@@ -45,6 +52,7 @@
 
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <span>
 #include <set>
@@ -62,35 +70,37 @@ struct DeferCounts {
   std::uint64_t subsegment = 0;  // p encroaches a subsegment of the closure
   std::uint64_t subfacet = 0;    // p encroaches a subfacet of the closure
   std::uint64_t removed = 0;     // the cavity would remove a subsegment or subfacet
-  std::uint64_t split_refused = 0;  // splits whose change of D was not exact (above)
+  std::uint64_t refused = 0;     // steps on ∂Ω whose change of D was not exact (above)
 };
 
-// A subsegment split committed in the parallel phase: the global ids of its ends and of
-// the midpoint's vertex, and the midpoint.
-struct SplitRecord {
-  Gid a = kNoGid, b = kNoGid, m = kNoGid;
+// A step on ∂Ω committed in the parallel phase: a subsegment split (c = kNoGid) or a
+// subfacet's circumcenter in facet `facet`, by the global ids of the element's vertices
+// and of the new vertex, and the new point.
+struct SurfaceStep {
+  Gid a = kNoGid, b = kNoGid, c = kNoGid, m = kNoGid;
   Point p{};
+  std::uint32_t facet = 0;
 };
 
 class RefinementRules final : public StepRules {
  public:
   // m0: the mesh that was partitioned (its D and its vertex ids); it must outlive this.
-  // `splits`: Refine(s) in the parallel phase (only where every split is the midpoint:
-  // a domain without acute angles).
+  // `surface_steps`: Refine(s) and Refine(f) in the parallel phase (above).
   RefinementRules(const refine::VolumeMesh& m0, const refine::TetBounds& bounds,
-                  bool splits = false);
+                  bool surface_steps = false);
 
   bool wants(const Submesh& s, TetId t) const override;
   Point point(const Submesh& s, TetId t) const override;
   Verdict accept(const Submesh& s, const Cavity& c) override;
-  bool accept_split(const Submesh& s, const Cavity& c, Gid a, Gid b) override;
+  Verdict accept_surface(const Submesh& s, const Cavity& c, Gid a, Gid b, Gid cc) override;
   VertexId commit(Submesh& s, const Cavity& c) override;
   // A committed circumcenter is off ∂Ω (a step that would put one on it is deferred).
   std::uint8_t new_vertex_tag() const override { return kInterior; }
 
-  const std::vector<SplitRecord>& splits() const { return splits_; }
-  // The subsegments (their ends' global ids, smaller first) whose split was refused.
-  const std::set<std::pair<Gid, Gid>>& refused_splits() const { return refused_; }
+  const std::vector<SurfaceStep>& surface_steps() const { return steps_; }
+  // The elements (their vertices' global ids, sorted; kNoGid last for a subsegment) whose
+  // step was refused.
+  const std::set<std::array<Gid, 3>>& refused() const { return refused_; }
   const DeferCounts& deferred() const { return deferred_; }
 
   // The tags to extract the submeshes with (Submesh::extract): 1 + M_o's vertex class
@@ -116,13 +126,27 @@ class RefinementRules final : public StepRules {
   }
 
  private:
-  // The subsegment edge of real tet t whose closed diametral ball holds p, or nothing.
-  std::optional<std::array<VertexId, 2>> encroached_subsegment(const Submesh& s, TetId t,
-                                                               const Point& p) const;
-  bool encroaches_subfacet(const Submesh& s, TetId t, const Point& p) const;
+  using Key = std::array<Gid, 3>;
+  // The subsegment edge of a real tet of `tets` whose closed diametral ball holds p.
+  std::optional<std::array<VertexId, 2>> encroached_subsegment(
+      const Submesh& s, std::initializer_list<const std::vector<TetId>*> tets,
+      const Point& p) const;
+  // The subfacet face of largest circumradius whose closed equatorial ball holds p.
+  std::optional<std::array<VertexId, 3>> encroached_subfacet(const Submesh& s,
+                                                             const Cavity& c) const;
+  // Refine(s) or Refine(f) for the element with local vertices v (v[2] kNoVertex for a
+  // subsegment), found on closure tet `near`; deferred (counted) when disabled or refused.
+  Verdict refine_element(const Submesh& s, std::array<VertexId, 3> v, TetId near);
+  Key key(const Submesh& s, std::array<VertexId, 3> v) const;
+  Point facet_point(const Submesh& s, const std::array<VertexId, 3>& v,
+                    std::uint32_t facet) const;
+  // The change of D of a surface step on cavity c (above) into plan_; false: not exact.
+  bool plan(const Submesh& s, const Cavity& c, std::optional<std::array<VertexId, 2>> split,
+            std::span<const std::uint32_t> facets, const std::array<VertexId, 3>* subfacet);
 
   static constexpr std::uint8_t kInterior = 1 + static_cast<int>(refine::VertexClass::Interior);
   static constexpr std::uint8_t kSegment = 1 + static_cast<int>(refine::VertexClass::Segment);
+  static constexpr std::uint8_t kFacet = 1 + static_cast<int>(refine::VertexClass::Facet);
   bool separates(std::uint32_t facet) const { return m0_.surf.facets[facet].separates; }
   static bool may_be(std::uint8_t tag, std::uint8_t want) { return tag == 0 || tag == want; }
 
@@ -131,18 +155,18 @@ class RefinementRules final : public StepRules {
   std::vector<std::uint8_t> tags_;  // per M_o vertex
   DeferCounts deferred_;
   std::vector<std::pair<VertexId, VertexId>> kept_;  // accept(): the boundary's edges
-  const bool splits_enabled_;
-  // Subsegments whose split was refused, by their ends' global ids (smaller first).
-  std::set<std::pair<Gid, Gid>> refused_;
-  // accept_split() -> commit(): the split's change of D (local vertex ids).
-  struct SplitPlan {
-    bool active = false;
+  const bool surface_steps_enabled_;
+  std::set<Key> refused_;
+  // accept_surface() -> commit(): the step's change of D (local vertex ids).
+  struct Plan {
+    enum class Kind : std::uint8_t { None, Split, Facet } kind = Kind::None;
+    Key element{};  // global ids, as the step named it
     VertexId a = kNoVertex, b = kNoVertex;
-    std::uint32_t segment = 0;
+    std::uint32_t label = 0;  // the segment split, or the facet
     std::vector<std::array<VertexId, 3>> removed;                      // subfacets
     std::vector<std::pair<std::array<VertexId, 2>, std::uint32_t>> fan;  // edge xy, facet
   } plan_;
-  std::vector<SplitRecord> splits_;
+  std::vector<SurfaceStep> steps_;
 };
 
 }  // namespace pdr::par

@@ -17,14 +17,16 @@
 
 namespace pdr::par {
 
-// What a tet's step does with its complete cavity (Fig. 2): insert its point, leave the
-// tet to the sequential completion, or refine the subsegment {a, b} that the point
-// encroaches first (Refine(s): insert its midpoint `p`; `near` is a closure tet with that
-// edge, where the midpoint's search starts; the tet is tried again after it).
+// What a step does with its complete cavity (Fig. 2): insert its point (Commit), leave
+// it (Defer: a tet's step is deferred to the sequential completion, a step on ∂Ω is
+// dropped), or refine an element of D first: Split, the subsegment {a, b} (Refine(s):
+// insert its midpoint `p`), Facet, the subfacet {a, b, c} (Refine(f): insert its
+// circumcenter `p`). `near` is a closure tet holding the element, where the new point's
+// search starts; the tet whose step this was is tried again after it.
 struct Verdict {
-  enum class Kind : std::uint8_t { Commit, Defer, Split };
+  enum class Kind : std::uint8_t { Commit, Defer, Split, Facet };
   Kind kind = Kind::Defer;
-  Gid a = kNoGid, b = kNoGid;
+  Gid a = kNoGid, b = kNoGid, c = kNoGid;
   Point p{};
   Gid near = kNoGid;
 };
@@ -39,11 +41,14 @@ class StepRules {
   // Cavity c of a tet's step is complete in s (conflict tets and ring real tets of s).
   // Commit: commit(s, c) next; Defer: the step is deferred (counted by the caller).
   virtual Verdict accept(const Submesh& s, const Cavity& c) = 0;
-  // Cavity c of the midpoint of subsegment {a, b} (global vertex ids) is complete in s:
-  // true when it may be committed (commit(s, c) next); false drops the step.
-  virtual bool accept_split(const Submesh&, const Cavity&, Gid, Gid) { return false; }
-  // Commits the cavity that accept() or accept_split() just accepted: the new vertex and
-  // tets with their inside flags (and D's labels, for a split). Returns the vertex.
+  // Cavity c of a step on ∂Ω (the point of a Split or Facet verdict for the element with
+  // global vertex ids a, b, c; c = kNoGid for a subsegment) is complete in s: Commit
+  // (commit(s, c) next), Split (Refine(f)'s point encroaches that subsegment), or Defer
+  // (the step is dropped).
+  virtual Verdict accept_surface(const Submesh&, const Cavity&, Gid, Gid, Gid) { return {}; }
+  // Commits the cavity that accept() or accept_surface() just accepted: the new vertex
+  // and tets with their inside flags (and D's labels, for a step on ∂Ω). Returns the
+  // vertex.
   virtual VertexId commit(Submesh& s, const Cavity& c) { return s.insert(c, 1, new_vertex_tag()); }
   // The tag of a committed tet circumcenter's vertex (Submesh::tag).
   virtual std::uint8_t new_vertex_tag() const { return 0; }

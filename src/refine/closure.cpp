@@ -29,21 +29,18 @@ std::optional<std::uint32_t> closure_encroached_subsegment(const VolumeMesh& m,
   return std::nullopt;
 }
 
+bool larger_subfacet(std::array<Point, 3> a, std::array<Point, 3> b) {
+  const Sign s = compare_circumradius(a[0], a[1], a[2], b[0], b[1], b[2]);
+  if (s != Sign::Zero) return s == Sign::Positive;
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  return a < b;
+}
+
 std::optional<std::uint32_t> closure_encroached_subfacet(const VolumeMesh& m,
                                                          ClosureTets tets, const Point& p) {
   std::optional<std::uint32_t> best;
   std::array<Point, 3> best_v{};
-  // Whether triangle v beats the best so far: the larger circumradius, exactly; on a tie,
-  // the lexicographically smaller sorted vertices (a geometric rule: the same choice for
-  // every numbering of the same mesh).
-  auto beats = [&](std::array<Point, 3> v) {
-    const Sign s = compare_circumradius(v[0], v[1], v[2], best_v[0], best_v[1], best_v[2]);
-    if (s != Sign::Zero) return s == Sign::Positive;
-    std::array<Point, 3> w = best_v;
-    std::sort(v.begin(), v.end());
-    std::sort(w.begin(), w.end());
-    return v < w;
-  };
   auto scan = [&](TetId t) {
     for (int f = 0; f < 4; ++f) {
       const auto sf = m.face_subfacet(t, f);
@@ -51,7 +48,7 @@ std::optional<std::uint32_t> closure_encroached_subfacet(const VolumeMesh& m,
       const Subfacet& x = m.surf.subfacet(*sf);
       const std::array<Point, 3> v{m.surf.point(x.v[0]), m.surf.point(x.v[1]), m.surf.point(x.v[2])};
       if (in_equatorial_ball(v[0], v[1], v[2], p) == Sign::Negative) continue;
-      if (!best || beats(v)) best = *sf, best_v = v;
+      if (!best || larger_subfacet(v, best_v)) best = *sf, best_v = v;
     }
   };
   for (const auto& list : tets)

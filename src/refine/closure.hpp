@@ -3,6 +3,7 @@
 // are the closure of p's cavity (its conflict tets and ring), or a tet alone.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
@@ -25,6 +26,11 @@ std::optional<std::uint32_t> closure_encroached_subsegment(const VolumeMesh& m,
 // exactly (geom/encroach.hpp); equal radii: the smaller sorted vertex coordinates.
 std::optional<std::uint32_t> closure_encroached_subfacet(const VolumeMesh& m,
                                                          ClosureTets tets, const Point& p);
+
+// Whether triangle a is the larger subfacet in Fig. 2's choice above: the larger
+// circumradius, exactly; on a tie, the lexicographically smaller sorted vertices (a
+// geometric rule: the same choice for every numbering of the same mesh).
+bool larger_subfacet(std::array<Point, 3> a, std::array<Point, 3> b);
 
 // Outside the theory: the first element of D, in the order of p's cavity (its conflict
 // tets from p's own tet outwards, then its ring), that p encroaches (closed balls, as
