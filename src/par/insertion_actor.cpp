@@ -132,13 +132,17 @@ bool InsertionActor::step() {
 bool InsertionActor::local_step(const Waiting& w) {
   const TetId t = w.tet == kNoGid ? kNoTet : sub_.find_tet(w.tet);
   if (w.tet != kNoGid && (t == kNoTet || sub_.deferred(t))) return false;
+  // Where the step's search starts: the tet itself, or for a step on ∂Ω a tet near its
+  // element.
+  const TetId from = w.a != kNoGid ? sub_.find_tet(w.near) : t;
   // A given point, the search's own tet, or a step parked before (it needed other ranks:
   // trying it again at every wait would rebuild its cavity for nothing).
-  if (t == kNoTet || w.parked || locked_.count(t) != 0) {
+  if (from == kNoTet || w.parked || locked_.count(from) != 0) {
     parked_.push_back(w);
     return true;
   }
-  const RootCavity rc = search_.root_cavity(sub_, rules_->point(sub_, t), t);
+  const RootCavity rc =
+      search_.root_cavity(sub_, w.a != kNoGid ? w.p : rules_->point(sub_, t), from);
   const auto locked = [&](TetId u) { return locked_.count(u) != 0; };
   if (rc.kind != RootCavity::Kind::Complete ||
       std::any_of(rc.cavity.conflict.begin(), rc.cavity.conflict.end(), locked) ||
@@ -162,21 +166,19 @@ bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
   if (v.kind == Verdict::Kind::Split || v.kind == Verdict::Kind::Facet) {
     Waiting first{v.p};
     first.a = v.a, first.b = v.b, first.c = v.c, first.near = v.near;
-    if (active_) {  // a local step while the search waits: it waits for the search's end
+    first.origin = w.a == kNoGid ? w.tet : w.origin;
+    first.setbacks = w.setbacks;
+    if (active_)  // a local step while the search waits: it waits for the search's end
       parked_.push_back(first);
-      if (w.a == kNoGid) {
-        Waiting again = w;
-        again.parked = true;
-        parked_.push_back(again);
-      }
-    } else {
-      if (w.a == kNoGid) ready_.push_front(w);
+    else
       ready_.push_front(first);
-    }
     return false;
   }
   if (v.kind == Verdict::Kind::Defer) {
-    if (w.a != kNoGid) return false;  // a step on ∂Ω: dropped (its tet is queued after it)
+    if (w.a != kNoGid) {  // a step on ∂Ω: dropped
+      requeue_origin(w);
+      return false;
+    }
     ++stats_.deferred;
     if (const TetId t = sub_.find_tet(w.tet); t != kNoTet) sub_.mark_deferred(t);
     return false;
@@ -187,7 +189,13 @@ bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
   committed_.push_back(c.point);
   made_.assign(sub_.created().begin(), sub_.created().end());
   for (const TetId t : made_) want(t);
+  requeue_origin(w);
   return true;
+}
+
+void InsertionActor::requeue_origin(const Waiting& w) {
+  if (w.a == kNoGid || w.origin == kNoGid) return;
+  if (const TetId t = sub_.find_tet(w.origin); t != kNoTet) want(t);
 }
 
 void InsertionActor::charge_search(double seconds) {
@@ -208,7 +216,10 @@ bool InsertionActor::start(Waiting w) {
   if (w.a != kNoGid) {  // a step on ∂Ω: from a tet near its element, or any here
     TetId from = sub_.find_tet(w.near);
     if (from == kNoTet) from = any_real_tet();
-    if (from == kNoTet) return false;
+    if (from == kNoTet) {
+      requeue_origin(w);
+      return false;
+    }
     active_ = true;
     s_ = Search{next_search_++, w, sub_.tet_gid(from), 0, false, false};
     round();
@@ -265,6 +276,7 @@ void InsertionActor::round() {
     // the completion, marked like a deferred step, so that every bad tet left is marked.
     if (s_.w.tet != kNoGid)
       if (const TetId t = sub_.find_tet(s_.w.tet); t != kNoTet) sub_.mark_deferred(t);
+    requeue_origin(s_.w);  // a step on ∂Ω: its point is there already
     finish();
     return;
   }

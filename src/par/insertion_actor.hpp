@@ -107,9 +107,10 @@ class InsertionActor {
     Point p{};
     Gid tet = kNoGid;  // refinement: the tet whose step this is (p is its circumcenter)
     // Refinement, a step on ∂Ω (tet is kNoGid): the subsegment {a, b} whose midpoint p
-    // is (c is kNoGid), or the subfacet {a, b, c} whose circumcenter it is, and a tet near
-    // it where its search starts.
-    Gid a = kNoGid, b = kNoGid, c = kNoGid, near = kNoGid;
+    // is (c is kNoGid), or the subfacet {a, b, c} whose circumcenter it is, a tet near
+    // it where its search starts, and the tet whose step asked for it (`origin`: queued
+    // again, when it is here, once this step ends; a setback delays both).
+    Gid a = kNoGid, b = kNoGid, c = kNoGid, near = kNoGid, origin = kNoGid;
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again
     bool parked = false;     // local_step() found it needs other ranks: not tried
@@ -141,8 +142,11 @@ class InsertionActor {
   bool local_step(const Waiting& w);
   // A complete cavity at this rank for step w: the rules accept it (commit, queue the new
   // tets they want), defer it (mark w's tet; a step on ∂Ω is dropped), or ask for a step
-  // on ∂Ω first (queued ahead of w's tet, which is tried again after it).
+  // on ∂Ω first (queued in w's place; w's tet is tried again once it ends).
   bool complete(const Cavity& c, const Waiting& w);  // true: committed
+  // A step on ∂Ω has ended (committed, dropped, or its point a vertex already): its
+  // origin tet is queued again if it is here and still wanted.
+  void requeue_origin(const Waiting& w);
   // Adds `seconds` to the active search's time; when it has ended (end_), moves its time
   // to the bucket of its outcome.
   void charge_search(double seconds);

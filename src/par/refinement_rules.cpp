@@ -205,6 +205,16 @@ Verdict RefinementRules::accept_surface(const Submesh& s, const Cavity& c, Gid g
   // Dropped when the element is gone (another step changed D meanwhile: the tet whose
   // step this was is tried again) or its point is not this one.
   if (a == kNoVertex || b == kNoVertex || (facet_step && cc == kNoVertex)) return {};
+  // The element is still in the mesh only as an edge or a face of a conflict tet (its
+  // point conflicts with every tet holding it); a label kept of an element no longer held
+  // may be one that is gone (Submesh M4).
+  const TetStore& st = s.store();
+  const bool held = std::any_of(c.conflict.begin(), c.conflict.end(), [&](TetId t) {
+    const VertexId* w = st.vertices(t);
+    const auto has = [&](VertexId x) { return std::find(w, w + 4, x) != w + 4; };
+    return has(a) && has(b) && (!facet_step || has(cc));
+  });
+  if (!held) return {};
   const std::array<VertexId, 3> v{a, b, cc};
   const auto refuse = [&]() -> Verdict {
     refused_.insert(key(s, v));
@@ -225,7 +235,8 @@ Verdict RefinementRules::accept_surface(const Submesh& s, const Cavity& c, Gid g
     // Fig. 2: a subfacet circumcenter that encroaches a subsegment refines it instead.
     if (const auto e = encroached_subsegment(s, {&c.conflict, &c.ring}, c.point)) {
       const Verdict split = refine_element(s, {(*e)[0], (*e)[1], kNoVertex}, c.seed);
-      return split.kind == Verdict::Kind::Split ? split : refuse();
+      if (split.kind != Verdict::Kind::Split) refused_.insert(key(s, v));  // counted there
+      return split;
     }
     const std::uint32_t only[1] = {*f};
     if (!plan(s, c, std::nullopt, only, &v)) return refuse();

@@ -47,7 +47,14 @@
 // changes to its D after the assembly (par/assembly.hpp).
 // Every committed step is thus a step the sequential mesher may take, on a closure no
 // other commit shares (Lemma 2), so the sequential completion continues a valid run of
-// Fig. 2 and Theorem 2's argument holds.
+// Fig. 2 and Theorem 2's argument holds. One difference in time: a step on ∂Ω is
+// committed on the mesh as it is when its own cavity is complete, its element still
+// there (accept_surface() drops it otherwise), while the tet whose point encroached the
+// element may be gone by then. Lemma 1's bounds on a refined element (a subsegment longer
+// than 2h, a subfacet of circumradius above h√2) are facts about the element and the
+// encroaching point at the time of encroachment, and the element has not changed since,
+// so they hold all the same; Fig. 2's subsegment rule for a subfacet's circumcenter is
+// applied on the mesh at commit.
 #pragma once
 
 #include <array>
@@ -157,7 +164,9 @@ class RefinementRules final : public StepRules {
   std::vector<std::pair<VertexId, VertexId>> kept_;  // accept(): the boundary's edges
   const bool surface_steps_enabled_;
   std::set<Key> refused_;
-  // accept_surface() -> commit(): the step's change of D (local vertex ids).
+  // accept_surface() -> commit(): the step's change of D (local vertex ids). One rules
+  // object serves every actor of a rank: the actor calls commit() right after the accept
+  // that planned it, in the same handler (par/insertion_actor.cpp complete()).
   struct Plan {
     enum class Kind : std::uint8_t { None, Split, Facet } kind = Kind::None;
     Key element{};  // global ids, as the step named it

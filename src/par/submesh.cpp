@@ -79,24 +79,6 @@ void Submesh::erase_face_label(VertexId a, VertexId b, VertexId c) {
   face_labels_.erase(k);
 }
 
-void Submesh::install_labels(std::span<const TetId> tets, const Migration& m) {
-  // First drop what this submesh knew of the arriving tets' edges and faces, then set
-  // what came with them (M4).
-  for (const TetId t : tets) {
-    const VertexId* v = store_.vertices(t);
-    for (const auto& e : tables::kEdgeVertex)
-      if (labelled(v[e[0]]) && labelled(v[e[1]])) erase_edge_label(v[e[0]], v[e[1]]);
-    for (const auto& f : tables::kFaceVertex)
-      if (labelled(v[f[0]]) && labelled(v[f[1]]) && labelled(v[f[2]]))
-        erase_face_label(v[f[0]], v[f[1]], v[f[2]]);
-  }
-  for (const EdgeLabel& l : m.edge_labels)
-    set_edge_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr), l.label);
-  for (const FaceLabel& l : m.face_labels)
-    set_face_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr),
-                   local_vertex(l.v[2], nullptr), l.label);
-}
-
 VertexId Submesh::find_vertex(Gid g) const {
   if (g == kGhostGid) return kGhostVertex;
   if (g < m0_local_.size()) return m0_local_[static_cast<std::size_t>(g)];
@@ -336,7 +318,11 @@ std::vector<TetId> Submesh::give(const Migration& m) {
     moved_.erase(r.gid);
     ids.push_back(t);
   }
-  install_labels(ids, m);
+  for (const EdgeLabel& l : m.edge_labels)
+    set_edge_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr), l.label);
+  for (const FaceLabel& l : m.face_labels)
+    set_face_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr),
+                   local_vertex(l.v[2], nullptr), l.label);
   std::vector<std::pair<FaceKey, HalfFace>> internal;  // faces between two of its tets
   for (std::size_t i = 0; i < m.tets.size(); ++i) {
     const TetId t = ids[i];

@@ -33,12 +33,15 @@
 //        refinement's labels are the subsegments and subfacets of the surface mesh D, par/
 //        refinement_rules.hpp: paper §4 item 2, each submesh starts "with the subsegments
 //        and subfacets of its tets"). The caller labels a submesh after extract(); take()
-//        sends the labels of the taken tets' edges and faces with them, and give() makes
-//        the labels of the arriving tets' edges and faces exactly those it got (a label
-//        this submesh kept of an edge it no longer held is dropped, as another submesh
-//        may have changed it since: a commit that splits a subsegment, par/
-//        refinement_rules.hpp). Labels of edges and faces no longer held may stay: no
-//        lookup reads them.
+//        sends the labels of the taken tets' edges and faces with them, and give() adds
+//        them. A commit (the caller's, after insert()) changes only labels of elements in
+//        its cavity, whose tets are all here: it erases those of elements the cavity
+//        takes out of the mesh and sets those of elements at the new vertex. An edge or
+//        face that leaves the Delaunay tetrahedralization never comes back (points are
+//        only added, and the symbolic perturbation decides every tie alike), so a label
+//        a submesh keeps of an edge or face it no longer holds is either still right or
+//        of one that no tet will have again. A caller must not ask for the label of an
+//        edge or face that is not one of a tet it holds.
 #pragma once
 
 #include <array>
@@ -275,7 +278,6 @@ class Submesh {
   std::vector<std::uint8_t> labelled_;
   bool labelled(VertexId v) const { return v < labelled_.size() && labelled_[v] != 0; }
   void collect_labels(std::span<const TetId> tets, Migration& m) const;
-  void install_labels(std::span<const TetId> tets, const Migration& m);
 };
 
 }  // namespace pdr::par

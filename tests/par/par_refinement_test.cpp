@@ -7,8 +7,11 @@
 //     builds it (the Delaunay tetrahedralization is unique; the midpoints split D as the
 //     sequential Refine(s) does), with the same inside tets, and assemble() glues their
 //     tets into exactly that mesh, every tet with its flag, and D a part of T;
-//   - no work was left behind: every bad inside tet of that mesh is one whose step the
-//     rules defer (checked on the whole mesh with the same rules);
+//   - every edge and face the ranks hold has the label of rank 0's D (Submesh M4);
+//   - no work was left behind: every bad inside tet of that mesh is marked deferred, and
+//     without the steps on ∂Ω every one is a step the rules defer (checked on the whole
+//     mesh with the same rules; with them, D changes after a deferral, so a few may be
+//     steps to commit by then: counted, the completion takes them);
 //   - the sequential completion then ends in a mesh the exact checker passes: valid,
 //     Delaunay, conforming, ratio < 2.
 // And the rules decide alike with and without the vertex tags that spare them most
@@ -161,6 +164,9 @@ struct SimRun {
   std::vector<test::PointTet> inside_tets;  // the ranks' inside tets
   std::vector<SurfaceStep> steps;
   std::vector<std::vector<Point>> refused;  // elements whose step was refused, sorted
+  // Every edge and face of the tets the ranks hold (ghosts aside), by its sorted points,
+  // with the holder's label (kNoLabel for none).
+  std::vector<std::pair<std::vector<Point>, std::uint32_t>> labels;
   InsertionStats stats;
 };
 
@@ -205,6 +211,24 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed, bool
       if (s.tag(v) != want) break;
     }
     out.points.insert(out.points.end(), a->committed_points().begin(), a->committed_points().end());
+    {
+      const TetStore& st = s.store();
+      const auto pts = s.points();
+      for (TetId t = 0; t < st.slots(); ++t) {
+        if (!st.is_alive(t) || st.is_proxy(t) || st.is_ghost(t)) continue;
+        const VertexId* v = st.vertices(t);
+        for (const auto& e : tables::kEdgeVertex) {
+          std::vector<Point> k{pts[v[e[0]]], pts[v[e[1]]]};
+          std::sort(k.begin(), k.end());
+          out.labels.emplace_back(k, s.edge_label(v[e[0]], v[e[1]]));
+        }
+        for (const auto& f : tables::kFaceVertex) {
+          std::vector<Point> k{pts[v[f[0]]], pts[v[f[1]]], pts[v[f[2]]]};
+          std::sort(k.begin(), k.end());
+          out.labels.emplace_back(k, s.face_label(v[f[0]], v[f[1]], v[f[2]]));
+        }
+      }
+    }
     const TetStore& st = s.store();
     std::vector<test::PointTet> tets;
     for (TetId t = 0; t < st.slots(); ++t)
@@ -279,6 +303,25 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     EXPECT_EQ(absorb(m, run.points, run.steps), run.points.size());
     EXPECT_TRUE(g.missing_subfacets.empty() && g.missing_subsegments.empty())
         << "seed " << seed << ": the phase's steps on ∂Ω left D out of T";
+    // Submesh M4 at the end: every edge and face the ranks hold has the label of rank 0's
+    // D, the phase's changes included.
+    {
+      std::map<Point, VertexId> at;
+      for (VertexId v = 0; v < g.dt.num_points(); ++v) at[g.dt.point(v)] = v;
+      std::size_t wrong = 0, labelled = 0;
+      for (const auto& [k, label] : run.labels) {
+        std::uint32_t want = kNoLabel;
+        if (k.size() == 2) {
+          if (const auto d = g.subsegment(at.at(k[0]), at.at(k[1]))) want = g.surf.subsegment(*d).segment;
+        } else if (const auto d = g.subfacet(at.at(k[0]), at.at(k[1]), at.at(k[2]))) {
+          want = g.surf.subfacet(*d).facet;
+        }
+        wrong += label != want;
+        labelled += label != kNoLabel;
+      }
+      EXPECT_EQ(wrong, 0u) << "seed " << seed << ": labels that are not D's";
+      EXPECT_GT(labelled, 100u) << "seed " << seed;
+    }
     EXPECT_TRUE(g.dt.check_topology().empty());
     EXPECT_TRUE(refine::audit_volume(g).empty());
     EXPECT_TRUE(all_tets(g) == all_tets(m)) << "seed " << seed << ": assembly differs from insertion";
