@@ -32,6 +32,8 @@ int run(const std::string& command, std::string& out) {
 }
 
 std::uint64_t g_points = 0;  // points committed by the parallel phases, over all cases
+std::uint64_t g_surface_points = 0;  // of them on ∂Ω (subsegment midpoints, subfacet
+                                     // circumcenters: axis-parallel domains)
 
 // Why the parallel run on plc fails ("" when it passes). Outside the theory (`outside`),
 // exit 3 is allowed, with quality.ratio and encroachment.* the only failing checks, and
@@ -59,6 +61,8 @@ std::string failure(const Plc& plc, const refine::test::Sizing& z, bool outside 
   if (j.at("order_independence").at("missing") != 0) return "order independence: " + j.dump();
   if (j.at("parallel").at("ranks") != 3) return "not 3 ranks: " + j.dump();
   g_points += j.at("parallel").at("points").get<std::uint64_t>();
+  for (const auto& r : j.at("parallel").at("per_rank"))
+    g_surface_points += r.at("splits").get<std::uint64_t>() + r.at("facet_points").get<std::uint64_t>();
   return "";
 }
 
@@ -80,8 +84,10 @@ TEST(MpiRandomDomains, EveryMeshPassesTheChecker) {
     RC_FAIL("mpirun pdr mesh fails on an admissible domain");
   }, 0x3A9D);
   EXPECT_GT(g_points, 0u) << "the parallel phases never committed a point";
-  std::printf("%d domains, %llu points committed in parallel\n", cases,
-              static_cast<unsigned long long>(g_points));
+  EXPECT_GT(g_surface_points, 0u) << "the parallel phases never refined a subsegment or subfacet";
+  std::printf("%d domains, %llu points committed in parallel, %llu of them on the boundary\n",
+              cases, static_cast<unsigned long long>(g_points),
+              static_cast<unsigned long long>(g_surface_points));
 }
 
 // Domains outside the theory (star prisms with acute and reflex corners, tees with
