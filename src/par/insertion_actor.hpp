@@ -109,7 +109,8 @@ class InsertionActor {
     // Refinement, a step on ∂Ω (tet is kNoGid): the subsegment {a, b} whose midpoint p
     // is (c is kNoGid), or the subfacet {a, b, c} whose circumcenter it is, a tet near
     // it where its search starts, and the tet whose step asked for it (`origin`: queued
-    // again, when it is here, once this step ends; a setback delays both).
+    // again, when it is here, once this step ends, so a setback of this step delays it
+    // too; it is queued afresh, its own setbacks counted from zero).
     Gid a = kNoGid, b = kNoGid, c = kNoGid, near = kNoGid, origin = kNoGid;
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again

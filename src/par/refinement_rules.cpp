@@ -206,8 +206,10 @@ Verdict RefinementRules::accept_surface(const Submesh& s, const Cavity& c, Gid g
   // step this was is tried again) or its point is not this one.
   if (a == kNoVertex || b == kNoVertex || (facet_step && cc == kNoVertex)) return {};
   // The element is still in the mesh only as an edge or a face of a conflict tet (its
-  // point conflicts with every tet holding it); a label kept of an element no longer held
-  // may be one that is gone (Submesh M4).
+  // point conflicts with every tet holding it: exactly, with the exact constructions the
+  // caller enables these steps for; were a point rounded off its facet, a live element
+  // could fail this test and its step be dropped again and again); a label kept of an
+  // element no longer held may be one that is gone (Submesh M4).
   const TetStore& st = s.store();
   const bool held = std::any_of(c.conflict.begin(), c.conflict.end(), [&](TetId t) {
     const VertexId* w = st.vertices(t);
