@@ -7,8 +7,12 @@
 
 namespace pdr::par {
 
-RootCavity CavitySearch::root_cavity(const Submesh& s, const Point& p, TetId hint) {
-  RootCavity out;
+const RootCavity& CavitySearch::root_cavity(const Submesh& s, const Point& p, TetId hint) {
+  RootCavity& out = root_;
+  out.kind = RootCavity::Kind::Complete;
+  out.cavity.clear();
+  out.fetch.clear();
+  out.walk = false;
   const TetStore& st = s.store();
   const Location loc = locate(st, s.points(), p, hint, rng_);
   if (loc.kind == Location::Kind::OnVertex) {

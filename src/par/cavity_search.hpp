@@ -39,8 +39,9 @@ struct RootCavity {
 
 class CavitySearch {
  public:
-  // Locates p from `hint` (a live real tet of s) and builds its cavity in s.
-  RootCavity root_cavity(const Submesh& s, const Point& p, TetId hint);
+  // Locates p from `hint` (a live real tet of s) and builds its cavity in s. The result
+  // lives in this object (its buffers are reused) until the next call.
+  const RootCavity& root_cavity(const Submesh& s, const Point& p, TetId hint);
   // The tets of s to migrate to the root for the requested tets `wanted` (those s holds;
   // the others are skipped: the caller redirects them), each once; for a walk, the tet
   // where the walk stopped comes first (the root goes on from it).
@@ -51,6 +52,7 @@ class CavitySearch {
   WalkRng rng_;
   CavityBuilder builder_;
   Cavity part_;
+  RootCavity root_;
 };
 
 }  // namespace pdr::par

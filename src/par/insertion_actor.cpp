@@ -50,9 +50,11 @@ void InsertionActor::add_wanted_tets() {
 }
 
 void InsertionActor::want(TetId t) {
-  if (rules_ != nullptr && !sub_.store().is_ghost(t) && sub_.inside(t) && !sub_.deferred(t) &&
-      rules_->wants(sub_, t))
-    ready_.push_back({Point{}, sub_.tet_gid(t)});
+  if (rules_ == nullptr || sub_.store().is_ghost(t) || !sub_.inside(t) || sub_.deferred(t))
+    return;
+  std::optional<bool> w = sub_.wanted(t);
+  if (!w) sub_.set_wanted(t, *(w = rules_->wants(sub_, t)));
+  if (*w) ready_.push_back({Point{}, sub_.tet_gid(t)});
 }
 
 void InsertionActor::send(int to, Bytes b) { t_.send(to, std::move(b)); }
@@ -141,7 +143,7 @@ bool InsertionActor::local_step(const Waiting& w) {
     parked_.push_back(w);
     return true;
   }
-  const RootCavity rc =
+  const RootCavity& rc =
       search_.root_cavity(sub_, w.a != kNoGid ? w.p : rules_->point(sub_, t), from);
   const auto locked = [&](TetId u) { return locked_.count(u) != 0; };
   if (rc.kind != RootCavity::Kind::Complete ||
@@ -269,7 +271,7 @@ void InsertionActor::round() {
     setback();
     return;
   }
-  RootCavity rc = search_.root_cavity(sub_, s_.w.p, hint);
+  const RootCavity& rc = search_.root_cavity(sub_, s_.w.p, hint);
   if (rc.kind == RootCavity::Kind::OnVertex) {
     ++stats_.duplicates;
     // A tet's step whose point is a vertex already (its rounded circumcenter): left to

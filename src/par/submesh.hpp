@@ -94,7 +94,8 @@ struct TetRecord {
   Gid gid = 0;
   std::uint32_t epoch = 0;          // moves so far, this one included
   std::array<Gid, 4> v{};           // positively oriented; a ghost has kGhostGid in slot 3
-  std::uint8_t inside = 0;          // bit 0: the tet lies in Ω; bit 1: deferred (below)
+  std::uint8_t inside = 0;          // bit 0: the tet lies in Ω; bit 1: deferred; bits 2-3:
+                                    // whether it is wanted, once known (below)
   std::array<Side, 4> across{};     // per face; claim.holder kSameMigration: in this migration
 };
 
@@ -165,6 +166,15 @@ class Submesh {
   // travels with the tet, so no rank takes that step up again in the parallel phase.
   bool deferred(TetId t) const { return t < inside_.size() && (inside_[t] & 2) != 0; }
   void mark_deferred(TetId t) { inside_[t] |= 2; }
+  // The refinement's verdict on real tet t (StepRules::wants), once computed: a fixed
+  // property of the tet, so it travels with it and is not computed again on arrival.
+  std::optional<bool> wanted(TetId t) const {
+    if (t >= inside_.size() || (inside_[t] & 4) == 0) return std::nullopt;
+    return (inside_[t] & 8) != 0;
+  }
+  void set_wanted(TetId t, bool w) {
+    inside_[t] = static_cast<std::uint8_t>((inside_[t] & ~8) | 4 | (w ? 8 : 0));
+  }
   // Sets the inside flag of real tet t (a tet insert() just made: the refinement's flags
   // of a cavity that crosses ∂Ω).
   void set_inside(TetId t, bool in) {
