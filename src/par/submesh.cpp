@@ -82,8 +82,27 @@ void Submesh::erase_face_label(VertexId a, VertexId b, VertexId c) {
 VertexId Submesh::find_vertex(Gid g) const {
   if (g == kGhostGid) return kGhostVertex;
   if (g < m0_local_.size()) return m0_local_[static_cast<std::size_t>(g)];
+  if (dense_ && (g & kVertexBit) != 0 && (g >> 40) != 0) {
+    const std::size_t by = static_cast<std::size_t>((g >> 40) - 1);
+    const std::size_t serial = static_cast<std::size_t>(g & (kVertexBit - 1));
+    return by < fresh_local_.size() && serial < fresh_local_[by].size() ? fresh_local_[by][serial]
+                                                                          : kNoVertex;
+  }
   const auto it = local_.find(g);
   return it == local_.end() ? kNoVertex : it->second;
+}
+
+VertexId* Submesh::vertex_slot(Gid g) {
+  if (g < m0_local_.size()) return &m0_local_[static_cast<std::size_t>(g)];
+  if (dense_ && (g & kVertexBit) != 0 && (g >> 40) != 0) {
+    const std::size_t by = static_cast<std::size_t>((g >> 40) - 1);
+    const std::size_t serial = static_cast<std::size_t>(g & (kVertexBit - 1));
+    if (fresh_local_.size() <= by) fresh_local_.resize(by + 1);
+    std::vector<VertexId>& v = fresh_local_[by];
+    if (v.size() <= serial) v.resize(serial + serial / 2 + 64, kNoVertex);
+    return &v[serial];
+  }
+  return &local_.try_emplace(g, kNoVertex).first->second;
 }
 
 void Submesh::collect_labels(std::span<const TetId> tets, Migration& m) const {
@@ -114,8 +133,7 @@ void Submesh::collect_labels(std::span<const TetId> tets, Migration& m) const {
 
 VertexId Submesh::local_vertex(Gid g, const Point* p, std::uint8_t tag) {
   if (g == kGhostGid) return kGhostVertex;
-  VertexId* slot = g < m0_local_.size() ? &m0_local_[static_cast<std::size_t>(g)]
-                                          : &local_.try_emplace(g, kNoVertex).first->second;
+  VertexId* slot = vertex_slot(g);
   if (*slot == kNoVertex) {
     if (p == nullptr) throw std::logic_error("submesh: vertex " + std::to_string(g) + " unknown");
     *slot = static_cast<VertexId>(points_.size());
@@ -211,6 +229,7 @@ Submesh Submesh::extract(ActorId k, const TetStore& s, std::span<const Point> pt
   if (dense) {
     m.m0_slot_.assign(s.slots(), kNoTet);
     m.m0_local_.assign(pts.size(), kNoVertex);
+    m.dense_ = true;
   }
   std::vector<TetId> local(s.slots(), kNoTet);
   std::vector<TetId> mine;
@@ -367,7 +386,7 @@ std::vector<TetId> Submesh::give(const Migration& m) {
 }
 
 VertexId Submesh::insert(const Cavity& c, std::uint8_t inside, std::uint8_t tag) {
-  const VertexId v = local_vertex(fresh_gid(), &c.point, tag);
+  const VertexId v = local_vertex(fresh_vertex_gid(), &c.point, tag);
   for (const TetId t : c.conflict) {
     unindex_tet(tet_gid_[t]);
     if (exposed_[t] != 0) moved_[tet_gid_[t]] = Claim{kDeleted, ~std::uint32_t{0}};

@@ -236,17 +236,26 @@ class Submesh {
   void claim(TetId proxy, const Claim& c);  // keeps the newer claim
   void record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside);
 
+  // Fresh global ids: (id + 1) * 2^40 + serial for a tet, with 2^39 added and a serial of
+  // their own for a vertex; M_o's are below 2^40.
+  static constexpr Gid kVertexBit = Gid{1} << 39;
   Gid fresh_gid() { return (Gid{id_} + 1) << 40 | serial_++; }
+  Gid fresh_vertex_gid() { return (Gid{id_} + 1) << 40 | kVertexBit | vertex_serial_++; }
+  // Where the local id of vertex g is kept (kNoVertex there: not here yet).
+  VertexId* vertex_slot(Gid g);
 
   ActorId id_;
-  Gid serial_ = 0;  // fresh global ids: (id + 1) * 2^40 + serial; M_o's are below 2^40
+  Gid serial_ = 0, vertex_serial_ = 0;
   CavityCommitter committer_;
   TetStore store_;
   std::vector<Point> points_;
   std::vector<Gid> gids_;
   std::vector<std::uint8_t> tags_;
-  // Local vertex ids by global id; with a dense index (extract()), M_o's in a vector.
+  // Local vertex ids by global id; with a dense index (extract()), M_o's in a vector and
+  // those made in the phase in a vector per submesh that made them, by serial.
+  bool dense_ = false;
   std::vector<VertexId> m0_local_;
+  std::vector<std::vector<VertexId>> fresh_local_;
   std::unordered_map<Gid, VertexId> local_;
   std::vector<std::uint8_t> inside_;      // per slot
   std::vector<Gid> tet_gid_;              // per slot
