@@ -323,13 +323,16 @@ bool parallel_case(const std::string& pdr, const std::string& tetgen, const fs::
   if (j.contains("parallel"))
     for (const auto& r : j.at("parallel").at("per_rank"))
       std::printf("  rank %d: %.2f s phase, %.2f s busy (%.0f%%), %llu commits (%llu while "
-                  "waiting), %llu setbacks, %llu tets migrated, %llu messages\n",
+                  "waiting, %llu on the boundary), %llu setbacks, %llu tets migrated, %llu "
+                  "messages\n",
                   r.at("rank").get<int>(), r.at("seconds").get<double>(),
                   r.at("busy_seconds").get<double>(),
                   100 * r.at("busy_seconds").get<double>() /
                       std::max(1e-9, r.at("seconds").get<double>()),
                   r.at("commits").get<unsigned long long>(),
                   r.at("local_while_waiting").get<unsigned long long>(),
+                  r.at("splits").get<unsigned long long>() +
+                      r.at("facet_points").get<unsigned long long>(),
                   r.at("setbacks").get<unsigned long long>(),
                   r.at("tets_migrated").get<unsigned long long>(),
                   r.at("messages_sent").get<unsigned long long>());

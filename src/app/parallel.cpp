@@ -112,14 +112,16 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
 }
 
 void print_table(const std::vector<par::RankFigures>& all) {
-  std::fprintf(stderr, "parallel phase: %-4s %8s %8s %9s %9s %8s %9s %9s %10s\n", "rank",
-               "seconds", "busy", "commits", "deferred", "setbacks", "migrated", "messages",
-               "final_tets");
+  std::fprintf(stderr, "parallel phase: %-4s %8s %8s %9s %8s %9s %8s %9s %9s %10s\n", "rank",
+               "seconds", "busy", "commits", "on_bdry", "deferred", "setbacks", "migrated",
+               "messages", "final_tets");
   for (std::size_t r = 0; r < all.size(); ++r) {
     const par::RankFigures& f = all[r];
     const auto& d = f.deferred;
-    std::fprintf(stderr, "parallel phase: %-4zu %8.3f %8.3f %9llu %9llu %8llu %9llu %9llu %10llu\n",
+    std::fprintf(stderr,
+                 "parallel phase: %-4zu %8.3f %8.3f %9llu %8llu %9llu %8llu %9llu %9llu %10llu\n",
                  r, f.seconds, f.busy_seconds, static_cast<unsigned long long>(f.steps.commits),
+                 static_cast<unsigned long long>(f.steps.splits + f.steps.facet_points),
                  static_cast<unsigned long long>(d.outside + d.subsegment + d.subfacet + d.removed),
                  static_cast<unsigned long long>(f.steps.setbacks),
                  static_cast<unsigned long long>(f.steps.tets_sent),
