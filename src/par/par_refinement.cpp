@@ -76,7 +76,6 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   f.sleeps = idle.sleeps();
   f.points = out.points.size();
   out.surface_steps = rules.surface_steps();
-  f.surface_points = out.surface_steps.size();
   out.pieces = pieces.take();
   return out;
 }

@@ -37,7 +37,6 @@ struct RankFigures {
   std::uint64_t empty_polls = 0, sleeps = 0;
   std::uint64_t start_tets = 0, final_tets = 0;  // real tets of the submesh
   std::uint64_t points = 0;                     // points committed (RankResult::points)
-  std::uint64_t surface_points = 0;             // of them, on ∂Ω
 };
 
 struct RankResult {

@@ -255,8 +255,10 @@ bool RefinementRules::plan(const Submesh& s, const Cavity& c,
                            const std::array<VertexId, 3>* subfacet_removed) {
   const TetStore& st = s.store();
   // The cavity's boundary: its edges, and the inside flag each new tet gets.
-  std::vector<Edge> boundary_edges;
-  std::vector<std::pair<Edge, std::uint8_t>> flag_at_edge;  // per boundary face's edge
+  auto& boundary_edges = plan_edges_;
+  auto& flag_at_edge = plan_flags_;  // per boundary face's edge
+  boundary_edges.clear();
+  flag_at_edge.clear();
   for (const HalfFace h : c.boundary) {
     const TetId t = tet_of(h);
     const VertexId* w = st.vertices(t);
@@ -279,7 +281,8 @@ bool RefinementRules::plan(const Submesh& s, const Cavity& c,
   const Edge ab = split ? edge((*split)[0], (*split)[1]) : Edge{kNoVertex, kNoVertex};
   if (split && on_boundary(ab)) return false;  // ab would stay
   // Subsegments and subfacets the cavity removes.
-  std::vector<std::pair<std::array<VertexId, 3>, std::uint32_t>> removed;
+  auto& removed = plan_removed_;
+  removed.clear();
   bool has_ab = false;
   for (const TetId t : c.conflict) {
     const VertexId* v = st.vertices(t);
@@ -314,14 +317,15 @@ bool RefinementRules::plan(const Submesh& s, const Cavity& c,
       return false;  // the subfacet would stay
   }
   // Each facet's region: its boundary edges (ab excepted) fan out from the new vertex.
-  std::vector<std::pair<std::pair<std::uint32_t, Edge>, int>> count;
+  auto& count = plan_region_;  // the removed subfacets' edges, by facet
+  count.clear();
   for (const auto& [k, f] : removed)
-    for (int i = 0; i < 3; ++i) count.push_back({{f, edge(k[i], k[(i + 1) % 3])}, 1});
+    for (int i = 0; i < 3; ++i) count.push_back({f, edge(k[i], k[(i + 1) % 3])});
   std::sort(count.begin(), count.end());
   for (std::size_t i = 0; i < count.size();) {
     std::size_t j = i;
-    while (j < count.size() && count[j].first == count[i].first) ++j;
-    const auto& [f, e] = count[i].first;
+    while (j < count.size() && count[j] == count[i]) ++j;
+    const auto& [f, e] = count[i];
     if (j - i == 1 && e != ab) {
       if (!on_boundary(e)) return false;
       plan_.fan.push_back({{e.first, e.second}, f});

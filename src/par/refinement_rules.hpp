@@ -176,6 +176,11 @@ class RefinementRules final : public StepRules {
     std::vector<std::pair<std::array<VertexId, 2>, std::uint32_t>> fan;  // edge xy, facet
   } plan_;
   std::vector<SurfaceStep> steps_;
+  // plan()'s buffers, reused from step to step.
+  std::vector<std::pair<VertexId, VertexId>> plan_edges_;
+  std::vector<std::pair<std::pair<VertexId, VertexId>, std::uint8_t>> plan_flags_;
+  std::vector<std::pair<std::array<VertexId, 3>, std::uint32_t>> plan_removed_;
+  std::vector<std::pair<std::uint32_t, std::pair<VertexId, VertexId>>> plan_region_;
 };
 
 }  // namespace pdr::par
