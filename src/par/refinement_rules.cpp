@@ -80,28 +80,6 @@ std::optional<std::array<VertexId, 2>> RefinementRules::encroached_subsegment(
   return std::nullopt;
 }
 
-std::optional<std::array<VertexId, 3>> RefinementRules::encroached_subfacet(
-    const Submesh& s, const Cavity& c) const {
-  const TetStore& st = s.store();
-  const auto pts = s.points();
-  std::optional<std::array<VertexId, 3>> best;
-  std::array<Point, 3> best_p{};
-  for (const auto* list : {&c.conflict, &c.ring})
-    for (const TetId t : *list) {
-      if (st.is_ghost(t) || st.is_proxy(t)) continue;
-      const VertexId* v = st.vertices(t);
-      if (!may_touch_d(s, v)) continue;
-      for (const auto& f : tables::kFaceVertex) {
-        const std::array<VertexId, 3> x{v[f[0]], v[f[1]], v[f[2]]};
-        if (!subfacet(s, x[0], x[1], x[2])) continue;
-        const std::array<Point, 3> q{pts[x[0]], pts[x[1]], pts[x[2]]};
-        if (in_equatorial_ball(q[0], q[1], q[2], c.point) == Sign::Negative) continue;
-        if (!best || refine::larger_subfacet(q, best_p)) best = x, best_p = q;
-      }
-    }
-  return best;
-}
-
 RefinementRules::Key RefinementRules::key(const Submesh& s, std::array<VertexId, 3> v) const {
   Key k{s.gid(v[0]), s.gid(v[1]), v[2] == kNoVertex ? kNoGid : s.gid(v[2])};
   std::sort(k.begin(), k.end());  // kNoGid, the largest, last
@@ -136,55 +114,73 @@ Verdict RefinementRules::refine_element(const Submesh& s, std::array<VertexId, 3
 Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
   plan_.kind = Plan::Kind::None;
   const TetStore& st = s.store();
-  // Fig. 2: an encroached subsegment first, then the largest encroached subfacet.
-  if (const auto e = encroached_subsegment(s, {&c.conflict, &c.ring}, c.point))
-    return refine_element(s, {(*e)[0], (*e)[1], kNoVertex}, c.seed);
-  if (const auto f = encroached_subfacet(s, c)) return refine_element(s, *f, c.seed);
-  for (const TetId t : c.conflict)
-    if (st.is_ghost(t) || !s.inside(t)) {
-      ++deferred_.outside;
-      return {};
+  const auto pts = s.points();
+  // One pass over the closure (conflict tets, then the ring) reads each edge's and face's
+  // label once and gathers what Fig. 2's order then decides on: an encroached subsegment
+  // first (the first one met: it ends the pass), then the largest encroached subfacet,
+  // then a conflict tet outside Ω, then an element of D the cavity would take out of T.
+  std::optional<std::array<VertexId, 3>> best;  // the largest encroached subfacet
+  std::array<Point, 3> best_p{};
+  bool outside = false, removed = false;
+  kept_.clear();
+  const auto survives = [&](VertexId a, VertexId b) {
+    // A subsegment edge of a conflict tet survives only as an edge of the boundary.
+    if (kept_.empty()) {
+      for (const HalfFace h : c.boundary) {
+        const VertexId* w = st.vertices(tet_of(h));
+        const auto& f = tables::kFaceVertex[face_of(h)];
+        for (int k = 0; k < 3; ++k) {
+          const VertexId x = w[f[k]], y = w[f[(k + 1) % 3]];
+          kept_.emplace_back(std::min(x, y), std::max(x, y));
+        }
+      }
+      std::sort(kept_.begin(), kept_.end());
     }
-  for (const TetId t : c.conflict) {
-    // A subfacet face of a conflict tet survives only on the boundary (between two inside
-    // conflict tets lies an internal facet, domain/domain.hpp, which the cavity would take
-    // out of T).
-    const VertexId* v = st.vertices(t);
-    if (!may_touch_d(s, v)) continue;
-    for (int f = 0; f < 4; ++f) {
-      const auto& fv = tables::kFaceVertex[f];
-      if (subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]) &&
-          std::find(c.boundary.begin(), c.boundary.end(), half_face(t, f)) == c.boundary.end()) {
-        ++deferred_.removed;
-        return {};
+    return std::binary_search(kept_.begin(), kept_.end(),
+                              std::pair<VertexId, VertexId>(std::min(a, b), std::max(a, b)));
+  };
+  for (const auto* list : {&c.conflict, &c.ring}) {
+    const bool conflict = list == &c.conflict;
+    for (const TetId t : *list) {
+      if (st.is_ghost(t) || st.is_proxy(t)) {
+        outside = outside || conflict;
+        continue;
+      }
+      if (conflict && !s.inside(t)) outside = true;
+      const VertexId* v = st.vertices(t);
+      if (!may_touch_d(s, v)) continue;
+      for (const auto& e : tables::kEdgeVertex) {
+        const VertexId a = v[e[0]], b = v[e[1]];
+        if (!subsegment(s, a, b)) continue;
+        if (in_diametral_ball(pts[a], pts[b], c.point) != Sign::Negative)
+          return refine_element(s, {a, b, kNoVertex}, c.seed);
+        if (conflict && !removed && !survives(a, b)) removed = true;
+      }
+      for (int f = 0; f < 4; ++f) {
+        const auto& fv = tables::kFaceVertex[f];
+        const std::array<VertexId, 3> x{v[fv[0]], v[fv[1]], v[fv[2]]};
+        if (!subfacet(s, x[0], x[1], x[2])) continue;
+        const std::array<Point, 3> q{pts[x[0]], pts[x[1]], pts[x[2]]};
+        if (in_equatorial_ball(q[0], q[1], q[2], c.point) != Sign::Negative &&
+            (!best || refine::larger_subfacet(q, best_p)))
+          best = x, best_p = q;
+        // A subfacet face of a conflict tet survives only on the boundary (between two
+        // inside conflict tets lies an internal facet, domain/domain.hpp, which the
+        // cavity would take out of T).
+        if (conflict && !removed &&
+            std::find(c.boundary.begin(), c.boundary.end(), half_face(t, f)) == c.boundary.end())
+          removed = true;
       }
     }
   }
-  // A subsegment edge of a conflict tet survives only as an edge of the boundary.
-  kept_.clear();
-  for (const TetId t : c.conflict) {
-    const VertexId* v = st.vertices(t);
-    if (!may_touch_d(s, v)) continue;
-    for (const auto& e : tables::kEdgeVertex) {
-      if (!subsegment(s, v[e[0]], v[e[1]])) continue;
-      if (kept_.empty()) {
-        for (const HalfFace h : c.boundary) {
-          const VertexId* w = st.vertices(tet_of(h));
-          const auto& f = tables::kFaceVertex[face_of(h)];
-          for (int k = 0; k < 3; ++k) {
-            const VertexId a = w[f[k]], b = w[f[(k + 1) % 3]];
-            kept_.emplace_back(std::min(a, b), std::max(a, b));
-          }
-        }
-        std::sort(kept_.begin(), kept_.end());
-      }
-      const std::pair<VertexId, VertexId> key(std::min(v[e[0]], v[e[1]]),
-                                              std::max(v[e[0]], v[e[1]]));
-      if (!std::binary_search(kept_.begin(), kept_.end(), key)) {
-        ++deferred_.removed;
-        return {};
-      }
-    }
+  if (best) return refine_element(s, *best, c.seed);
+  if (outside) {
+    ++deferred_.outside;
+    return {};
+  }
+  if (removed) {
+    ++deferred_.removed;
+    return {};
   }
   return {Verdict::Kind::Commit};
 }

@@ -138,9 +138,6 @@ class RefinementRules final : public StepRules {
   std::optional<std::array<VertexId, 2>> encroached_subsegment(
       const Submesh& s, std::initializer_list<const std::vector<TetId>*> tets,
       const Point& p) const;
-  // The subfacet face of largest circumradius whose closed equatorial ball holds p.
-  std::optional<std::array<VertexId, 3>> encroached_subfacet(const Submesh& s,
-                                                             const Cavity& c) const;
   // Refine(s) or Refine(f) for the element with local vertices v (v[2] kNoVertex for a
   // subsegment), found on closure tet `near`; deferred (counted) when disabled or refused.
   Verdict refine_element(const Submesh& s, std::array<VertexId, 3> v, TetId near);
