@@ -18,6 +18,7 @@
 #include "app/parallel.hpp"
 #include "io/error.hpp"
 #include "mesh/tet_store.hpp"
+#include "par/affinity.hpp"
 #include "par/mpi_transport.hpp"
 
 namespace {
@@ -161,5 +162,7 @@ int main(int argc, char** argv) {
   // start-up would cost the sequential kernel about 10%).
   if (pdr::par::launched_by_mpi() && pdr::par::launcher_world_size() != 1)
     return run_ranks(argc, argv);
+  // A single rank under mpirun is bound to one core, which its threads would share.
+  if (pdr::par::launched_by_mpi()) pdr::par::use_every_cpu();
   return run(argc, argv);
 }

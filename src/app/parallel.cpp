@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "par/affinity.hpp"
 #include "par/assembly.hpp"
 #include "par/mpi_collect.hpp"
 #include "par/mpi_transport.hpp"
@@ -165,6 +166,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // M_o: the same on every rank.
   // Steps on ∂Ω in the phase where D's changes are exact (par/refinement_rules.hpp).
   const bool surface_steps = opt.exact_theory;
+  const double shortest_t0 = refine::shortest_inside_edge(vm);  // T_o's, for Theorem 1's h
   const refine::RefineResult coarse = refine::refine(
       vm, coarse_options(opt, inside_volume(vm), initial_tets, surface_steps));
   vm.missing_subfacets.clear();  // restored (or reported again by the completion below)
@@ -230,6 +232,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     }
   }
   if (w.rank != 0) return std::nullopt;
+  // The other ranks are done; they sleep until rank 0 says how the run ended, so rank 0's
+  // threads (the writers', the checker's) may use their cores (par/affinity.hpp).
+  par::use_every_cpu();
   if (owners != nullptr) {
     owners->parts = w.size;
     if (distribute) {
@@ -288,6 +293,13 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // queued at the start, not every tet tested again.
   refine::RefineOptions rest = opt;
   if (distribute) rest.start_tets = std::move(assembled.deferred);
+  // T_o met Theorem 1's hypotheses exactly (the coarse run found its h) and every point
+  // since was a step of Fig. 2 (the coarse run's, then the phase's, each rank's tested by
+  // the same rules), with D whole in T: the completion resumes that run, with T_o's h
+  // under the final bounds (refine::RefineOptions::resumed_h).
+  if (distribute && coarse.stats.h_theorem > 0 && vm.missing_subfacets.empty() &&
+      vm.missing_subsegments.empty())
+    rest.resumed_h = refine::theorem_h(shortest_t0, opt);
   return refine::refine(vm, rest);
 }
 

@@ -41,32 +41,6 @@
 namespace pdr::refine {
 namespace {
 
-// Theorem 1's h, a priori. The proof of Lemma 1 holds for any h such that every edge of the
-// initial mesh is longer than h and every tet refined for its size has circumradius > 2h
-// (the encroachment and quality steps carry the bound from there). So h is the smallest of
-// the shortest edge of T_o inside Omega, L/2 for the circumradius bound L, and, for the
-// volume bound V, half the smallest circumradius a tet of volume > V can have: the regular
-// tet is the largest in its circumsphere (volume 8R^3/(9*sqrt(3))), so R > (9*sqrt(3)V/8)^(1/3).
-// Computed in floating point, then lowered by 2^-30 relative: any smaller h is as valid.
-double theorem_h(const VolumeMesh& m, const RefineOptions& o) {
-  const TetStore& s = m.dt.store();
-  double e2 = std::numeric_limits<double>::infinity();
-  for (TetId t = 0; t < s.slots(); ++t) {
-    if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) {
-        const Point& a = m.dt.point(s.vertex(t, i));
-        const Point& b = m.dt.point(s.vertex(t, j));
-        const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-        e2 = std::min(e2, dx * dx + dy * dy + dz * dz);
-      }
-  }
-  double h = std::sqrt(e2);
-  if (o.size) h = std::min(h, *o.size / 2);
-  if (const auto v = smallest_volume(o)) h = std::min(h, std::cbrt(9 * std::sqrt(3.0) * *v / 8) / 2);
-  return h * (1 - 0x1p-30);
-}
-
 class Refiner {
  public:
   Refiner(VolumeMesh& m, const RefineOptions& o)
@@ -86,11 +60,13 @@ class Refiner {
     // related elements of different sizes, surface/init.hpp) is refined first, as the
     // guards' pass does outside the theory.
     EncroachedLists at_start;
-    if (o_.admissible) encroached_at_start(at_start);
-    if (o_.admissible && o_.exact_theory && m_.missing_subfacets.empty() &&
-        m_.missing_subsegments.empty() && at_start.subsegments.empty() &&
-        at_start.subfacets.empty())
-      res_.stats.h_theorem = theorem_h(m_, o_);
+    if (o_.admissible && !o_.resumed_h) encroached_at_start(at_start);
+    if (o_.resumed_h)
+      res_.stats.h_theorem = *o_.resumed_h;
+    else if (o_.admissible && o_.exact_theory && m_.missing_subfacets.empty() &&
+             m_.missing_subsegments.empty() && at_start.subsegments.empty() &&
+             at_start.subfacets.empty())
+      res_.stats.h_theorem = theorem_h(shortest_inside_edge(m_), o_);
     const TetStore& s = m_.dt.store();
     // Then the stars of the new vertices are searched for encroachment as outside the
     // theory (a half of a split element can still be encroached by the same vertex), and
@@ -1039,6 +1015,36 @@ bool theorem_applies(const domain::DomainAnalysis& an) {
     if (!parallel) return false;
   }
   return true;
+}
+
+// Theorem 1's h, a priori. The proof of Lemma 1 holds for any h such that every edge of the
+// initial mesh is longer than h and every tet refined for its size has circumradius > 2h
+// (the encroachment and quality steps carry the bound from there). So h is the smallest of
+// the shortest edge of T_o inside Omega, L/2 for the circumradius bound L, and, for the
+// volume bound V, half the smallest circumradius a tet of volume > V can have: the regular
+// tet is the largest in its circumsphere (volume 8R^3/(9*sqrt(3))), so R > (9*sqrt(3)V/8)^(1/3).
+// Computed in floating point, then lowered by 2^-30 relative: any smaller h is as valid.
+double theorem_h(double shortest_edge, const RefineOptions& o) {
+  double h = shortest_edge;
+  if (o.size) h = std::min(h, *o.size / 2);
+  if (const auto v = smallest_volume(o)) h = std::min(h, std::cbrt(9 * std::sqrt(3.0) * *v / 8) / 2);
+  return h * (1 - 0x1p-30);
+}
+
+double shortest_inside_edge(const VolumeMesh& m) {
+  const TetStore& s = m.dt.store();
+  double e2 = std::numeric_limits<double>::infinity();
+  for (TetId t = 0; t < s.slots(); ++t) {
+    if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const Point& a = m.dt.point(s.vertex(t, i));
+        const Point& b = m.dt.point(s.vertex(t, j));
+        const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+        e2 = std::min(e2, dx * dx + dy * dy + dz * dz);
+      }
+  }
+  return std::sqrt(e2);
 }
 
 RefineResult refine(VolumeMesh& m, const RefineOptions& options) {

@@ -100,7 +100,23 @@ struct RefineOptions {
   // deferred, app/parallel.hpp); the run queues these instead of testing every tet. A bad
   // tet missing here is never refined, and the leftovers list it ("never refined").
   std::optional<std::vector<TetId>> start_tets;
+  // Given: the run resumes refinement of a mesh that Fig. 2's steps made from T_o, with T_o
+  // meeting Theorem 1's hypotheses exactly (the parallel run's completion on a domain whose
+  // constructions on ∂Ω are exact, app/parallel.hpp): Theorem 1's h of T_o under this
+  // run's bounds (theorem_h). The run takes it as its h_theorem, rather than one computed
+  // from the mesh it starts from (whose shortest edge every edge trivially exceeds), and
+  // skips the scan of every tet for encroached elements at the start: each step inserted
+  // its point only where the point encroached no element of its closure, and an element
+  // of D that a point encroaches lies in that point's closure, so none is encroached.
+  std::optional<double> resumed_h;
 };
+
+// Theorem 1's h for a run from a mesh whose shortest inside edge is `shortest_edge`: the
+// smallest of that edge, L/2 and the radius bound that V implies, lowered by 2^-30
+// relative (seq_refinement.cpp says why each).
+double theorem_h(double shortest_edge, const RefineOptions& o);
+// The shortest edge of an inside tet of m.
+double shortest_inside_edge(const VolumeMesh& m);
 
 // The smallest volume bound of the run: V and the regional bounds; none when neither.
 std::optional<double> smallest_volume(const RefineOptions& o);

@@ -30,6 +30,7 @@
 #include "par/assembly.hpp"
 #include "refine/audit.hpp"
 #include "refine/flat.hpp"
+#include "refine/guard.hpp"
 #include "refine/quality.hpp"
 #include "surface/locate.hpp"
 #include "surface/split.hpp"
@@ -324,6 +325,19 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     }
     EXPECT_TRUE(g.dt.check_topology().empty());
     EXPECT_TRUE(refine::audit_volume(g).empty());
+    // No element of D is encroached after the phase (each point went in only where it
+    // encroached no element of its closure): what lets the completion skip its scan
+    // (refine::RefineOptions::resumed_h).
+    {
+      std::vector<TetId> every;
+      for (TetId t = 0; t < g.dt.store().slots(); ++t)
+        if (g.dt.store().is_alive(t) && !g.dt.store().is_ghost(t)) every.push_back(t);
+      refine::EncroachedLists enc;
+      refine::find_encroached(g, every, enc);
+      EXPECT_TRUE(enc.subsegments.empty() && enc.subfacets.empty())
+          << "seed " << seed << ": " << enc.subsegments.size() << " subsegments and "
+          << enc.subfacets.size() << " subfacets encroached after the phase";
+    }
     EXPECT_TRUE(all_tets(g) == all_tets(m)) << "seed " << seed << ": assembly differs from insertion";
     EXPECT_EQ(g.dt.num_points(), m.dt.num_points());
     EXPECT_EQ(g.vclass.size(), g.dt.num_points());
@@ -414,12 +428,20 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     o.d = 2;  // cube-in-cube's d (the derived cap only)
     refine::RefineOptions from_deferred = o;
     from_deferred.start_tets = assembled.deferred;
+    // Resumed from M_o (unencroached, checked above), so Lemma 1 runs from it: every edge
+    // made since, the completion's included, is longer than M_o's h.
+    const double h = refine::theorem_h(refine::shortest_inside_edge(test::cube_in_cube()), o);
+    from_deferred.resumed_h = h;
     for (const auto& [mesh_of, opts] : {std::pair{&m, &o}, std::pair{&g, &from_deferred}}) {
       const refine::RefineResult rr = refine::refine(*mesh_of, *opts);
       EXPECT_TRUE(rr.leftovers.empty());
       const MeshData mesh = to_mesh_data(mesh_of->dt, mesh_of->inside);
       check::Options co;
       co.ratio_bound = 2.0;
+      if (opts->resumed_h) {
+        EXPECT_EQ(rr.stats.h_theorem, h);
+        co.min_edge = h;  // quality.shortest_edge, which fails on a shorter edge
+      }
       const check::Report report = check::check_mesh(check::view_of(mesh), plc, co);
       for (const auto& ch : report.checks)
         EXPECT_NE(ch.status, check::Status::Fail) << "seed " << seed << ": " << ch.id;

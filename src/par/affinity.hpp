@@ -1,0 +1,28 @@
+// The CPUs a rank may run on once the other ranks of its host are idle.
+//
+// mpirun binds each rank to a core by default (Open MPI: to a core for up to 2 ranks, to a
+// socket above), which suits the parallel phase: one event loop per core. What follows the
+// phase on rank 0 (the completion, the writers' threads, the checker's threads) runs while
+// every other rank sleeps in a collective (par/mpi_collect.hpp), and a single-rank mpirun
+// is the sequential command: bound to one core, their threads would take turns on it (a
+// 2M-tet check took 5.1 s there instead of 2.8 s). use_every_cpu() lets the calling thread,
+// and the threads it starts afterwards, run on every CPU of the host; the kernel keeps the
+// mask within the CPUs the job's control group allows, and where it refuses, the binding
+// stays as it was (only the speed differs).
+#pragma once
+
+#include <sched.h>
+#include <unistd.h>
+
+namespace pdr::par {
+
+// True when the mask was widened (false: refused; the binding stays).
+inline bool use_every_cpu() {
+  cpu_set_t all;
+  CPU_ZERO(&all);
+  const long n = sysconf(_SC_NPROCESSORS_CONF);
+  for (long c = 0; c < n && c < CPU_SETSIZE; ++c) CPU_SET(static_cast<int>(c), &all);
+  return sched_setaffinity(0, sizeof all, &all) == 0;
+}
+
+}  // namespace pdr::par

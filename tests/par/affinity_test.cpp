@@ -1,0 +1,39 @@
+// use_every_cpu() (par/affinity.hpp): a thread bound to one CPU, as mpirun binds a rank,
+// gets back every CPU the process was allowed, and a thread it starts afterwards has them
+// too.
+#include "par/affinity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+namespace pdr::par {
+namespace {
+
+int allowed_cpus() {
+  cpu_set_t s;
+  CPU_ZERO(&s);
+  EXPECT_EQ(sched_getaffinity(0, sizeof s, &s), 0);
+  return CPU_COUNT(&s);
+}
+
+TEST(Affinity, BoundThreadGetsEveryAllowedCpuBack) {
+  const int before = allowed_cpus();
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  ASSERT_EQ(sched_getaffinity(0, sizeof one, &one), 0);
+  int first = 0;
+  while (!CPU_ISSET(first, &one)) ++first;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);  // as mpirun's binding
+  ASSERT_EQ(allowed_cpus(), 1);
+  EXPECT_TRUE(use_every_cpu());
+  EXPECT_GE(allowed_cpus(), before);
+  int in_thread = 0;
+  std::thread([&] { in_thread = allowed_cpus(); }).join();
+  EXPECT_GE(in_thread, before);
+}
+
+}  // namespace
+}  // namespace pdr::par
