@@ -355,12 +355,9 @@ void InsertionActor::receive(int, std::span<const std::byte> bytes) {
     case Type::Tets: take_tets(r); break;
     case Type::Refuse: reply_in(true); break;
     case Type::Relink: {
-      Relink n = r.get<Relink>();
-      if (!sub_.relink(n)) {
-        WireWriter m;
-        m.put(Type::Relink).put(n);
-        send(static_cast<int>(n.recipient), m.take());
-      }
+      std::vector<Relink> notes = r.get_vector<Relink>();
+      std::erase_if(notes, [&](Relink& n) { return sub_.relink(n); });
+      send_relinks(notes);  // those to go on
       break;
     }
     case Type::Point: {
@@ -402,10 +399,21 @@ void InsertionActor::serve_fetch(WireReader& r) {
   const Migration mig = sub_.take(tets, root, notes);
   stats_.tets_sent += tets.size();
   send(static_cast<int>(root), migration_message(search, walk, mig));
-  for (const Relink& n : notes) {
+  send_relinks(notes);
+}
+
+void InsertionActor::send_relinks(std::vector<Relink>& notes) {
+  // One message per recipient, the notices in their order (a recipient applies them as
+  // if they had come one by one: FIFO per pair keeps them after the tets sent before).
+  std::stable_sort(notes.begin(), notes.end(),
+                   [](const Relink& a, const Relink& b) { return a.recipient < b.recipient; });
+  for (std::size_t i = 0; i < notes.size();) {
+    std::size_t j = i;
+    while (j < notes.size() && notes[j].recipient == notes[i].recipient) ++j;
     WireWriter m;
-    m.put(Type::Relink).put(n);
-    send(static_cast<int>(n.recipient), m.take());
+    m.put(Type::Relink).put_vector(std::vector<Relink>(notes.begin() + i, notes.begin() + j));
+    send(static_cast<int>(notes[i].recipient), m.take());
+    i = j;
   }
 }
 

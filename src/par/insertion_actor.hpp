@@ -135,6 +135,8 @@ class InsertionActor {
   void finish();
   TetId any_real_tet();
   void send(int to, Bytes b);
+  // Relink notices (Submesh::relink), one message per recipient; reorders `notes`.
+  void send_relinks(std::vector<Relink>& notes);
   void want(TetId t);  // refinement: queue t when the rules want it
   bool start(Waiting w);  // false: a tet that has left
   // Refinement, while the search waits for replies: the step of w's tet when its cavity
