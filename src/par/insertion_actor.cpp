@@ -54,7 +54,30 @@ void InsertionActor::want(TetId t) {
     return;
   std::optional<bool> w = sub_.wanted(t);
   if (!w) sub_.set_wanted(t, *(w = rules_->wants(sub_, t)));
-  if (*w) ready_.push_back({Point{}, sub_.tet_gid(t)});
+  if (*w) tets_.push_back({t, sub_.tet_gid(t)});
+}
+
+bool InsertionActor::next_ready(Waiting& w, int& skips) {
+  if (!ready_.empty()) {
+    w = ready_.front();
+    ready_.pop_front();
+    return true;
+  }
+  const TetStore& st = sub_.store();
+  while (tets_head_ < tets_.size() && skips > 0) {
+    const QueuedTet e = tets_[tets_head_++];
+    if (tets_head_ > 4096 && tets_head_ * 2 > tets_.size()) {
+      tets_.erase(tets_.begin(), tets_.begin() + static_cast<std::ptrdiff_t>(tets_head_));
+      tets_head_ = 0;
+    }
+    if (e.slot < st.slots() && st.is_alive(e.slot) && sub_.tet_gid(e.slot) == e.gid) {
+      w = Waiting{Point{}, e.gid};
+      return true;
+    }
+    ++stats_.gone;
+    --skips;
+  }
+  return false;
 }
 
 void InsertionActor::send(int to, Bytes b) { t_.send(to, std::move(b)); }
@@ -105,25 +128,25 @@ bool InsertionActor::step() {
     round();
     worked_ = true;
     charge_search(since(w0));
-  } else if (!active_ && !ready_.empty()) {
+  } else if (!active_ && has_ready()) {
     worked_ = true;
-    for (int n = 0; n < kDropsPerStep && !ready_.empty(); ++n) {
-      const Waiting w = ready_.front();
-      ready_.pop_front();
+    int skips = kDropsPerStep;
+    for (Waiting w; next_ready(w, skips);) {
       if (start(w)) break;
       ++stats_.gone;
+      if (--skips <= 0) break;
     }
     if (active_ || end_ != End::None)
       charge_search(since(w0));
     else
       stats_.other_s += since(w0);  // tets gone, a point passed on
-  } else if (active_ && !again_ && !ready_.empty()) {  // waiting for replies: local steps
+  } else if (active_ && !again_ && has_ready()) {  // waiting for replies: local steps
     worked_ = true;
-    for (int n = 0; n < kDropsPerStep && !ready_.empty(); ++n) {
-      const Waiting w = ready_.front();
-      ready_.pop_front();
+    int skips = kDropsPerStep;
+    for (Waiting w; next_ready(w, skips);) {
       if (local_step(w)) break;
       ++stats_.gone;
+      if (--skips <= 0) break;
     }
     stats_.masked_local_s += since(w0);
   }

@@ -26,8 +26,9 @@
 // perturbation makes unique (tested against the sequential kernel).
 // A rank whose store has no tet left passes its points on (POINT) to the next rank.
 //
-// Refinement (ParRefinement, paper Fig. 7), with StepRules (par/step_rules.hpp): the queue
-// also holds tets, by global id. A tet's step inserts rules.point() (its circumcenter),
+// Refinement (ParRefinement, paper Fig. 7), with StepRules (par/step_rules.hpp): a second
+// queue, taken after the first, holds tets (slot and global id, a compact FIFO: most
+// entries are of tets a later commit deleted, dropped by one look at their slot). A tet's step inserts rules.point() (its circumcenter),
 // searched as above from the tet itself; a complete cavity is committed only when
 // rules.accept() says so (else the step is deferred), and its new inside tets that the
 // rules want are queued. Tets that arrive by migration are queued when the rules want
@@ -94,7 +95,7 @@ class InsertionActor {
 
   const Submesh& submesh() const { return sub_; }
   const InsertionStats& stats() const { return stats_; }
-  bool idle() const { return !active_ && ready_.empty() && delayed_.empty() && parked_.empty(); }
+  bool idle() const { return !active_ && !has_ready() && delayed_.empty() && parked_.empty(); }
   // The last step() handled a message or did work of its own; a search of this rank waits
   // for replies (the idle policy only yields then: par/idle.hpp).
   bool worked() const { return worked_; }
@@ -125,6 +126,17 @@ class InsertionActor {
     bool refused = false;
     bool walk = false;
   };
+
+  // A tet queued by want(): its slot then and its global id (the slot no longer holding
+  // that tet means it has left or been deleted since).
+  struct QueuedTet {
+    TetId slot = kNoTet;
+    Gid gid = kNoGid;
+  };
+  bool has_ready() const { return !ready_.empty() || tets_head_ < tets_.size(); }
+  // The next step to take: ready_'s first, else the first queued tet still here (those
+  // that left are skipped and counted as gone, at most `skips` of them). False: none.
+  bool next_ready(Waiting& w, int& skips);
 
   void receive(int from, std::span<const std::byte> m);
   void serve_fetch(WireReader& r);
@@ -164,7 +176,9 @@ class InsertionActor {
   bool worked_ = false;
   Search s_;
   std::unordered_set<TetId> locked_;
-  std::deque<Waiting> ready_;
+  std::deque<Waiting> ready_;  // points, steps on ∂Ω, steps parked or set back
+  std::vector<QueuedTet> tets_;  // want(), in order; the first tets_head_ taken
+  std::size_t tets_head_ = 0;
   std::vector<Waiting> delayed_;
   std::vector<Waiting> parked_;  // local_step(): until the search ends
   std::vector<TetId> made_;
