@@ -28,8 +28,9 @@
 //
 // Refinement (ParRefinement, paper Fig. 7), with StepRules (par/step_rules.hpp): a second
 // queue, taken after the first, holds tets (slot and global id, a compact FIFO: most
-// entries are of tets a later commit deleted, dropped by one look at their slot). A tet's step inserts rules.point() (its circumcenter),
-// searched as above from the tet itself; a complete cavity is committed only when
+// entries are of tets a later commit deleted, dropped by one look at their slot). A
+// tet's step inserts rules.point() (its circumcenter), searched as above from the tet
+// itself; a complete cavity is committed only when
 // rules.accept() says so (else the step is deferred), and its new inside tets that the
 // rules want are queued. Tets that arrive by migration are queued when the rules want
 // them, so every wanted tet is in the queue of the rank that holds it. While its search
