@@ -24,59 +24,89 @@ std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
   return static_cast<std::size_t>(h ^ (h >> 31));
 }
 
-namespace {
-
-std::uint64_t edge_key(VertexId a, VertexId b) {
-  if (a > b) std::swap(a, b);
-  return std::uint64_t{a} << 32 | b;
-}
-
-}  // namespace
-
-std::size_t Submesh::TripleHash::operator()(const Triple& k) const {
-  std::uint64_t h = (std::uint64_t{k.v[0]} << 32 | k.v[1]) * 0x9E3779B97F4A7C15ull;
-  h ^= (h >> 29) + k.v[2] * 0xBF58476D1CE4E5B9ull;
-  return static_cast<std::size_t>(h ^ (h >> 32));
+Submesh::VertexLabels& Submesh::list_for(VertexId v) {
+  if (label_list_.size() <= v) label_list_.resize(points_.size(), kNoList);
+  if (label_list_[v] == kNoList) {
+    label_list_[v] = static_cast<std::uint32_t>(lists_.size());
+    lists_.emplace_back();
+  }
+  return lists_[label_list_[v]];
 }
 
 std::uint32_t Submesh::edge_label(VertexId a, VertexId b) const {
-  if (!labelled(a) || !labelled(b)) return kNoLabel;
-  const auto it = edge_labels_.find(edge_key(a, b));
-  return it == edge_labels_.end() ? kNoLabel : it->second;
+  if (a > b) std::swap(a, b);
+  if (const VertexLabels* l = list_at(a))
+    for (const EdgeEntry& e : l->edges)
+      if (e.b == b) return e.label;
+  return kNoLabel;
 }
 
 std::uint32_t Submesh::face_label(VertexId a, VertexId b, VertexId c) const {
-  if (!labelled(a) || !labelled(b) || !labelled(c)) return kNoLabel;
-  Triple k{{a, b, c}};
-  std::sort(k.v.begin(), k.v.end());
-  const auto it = face_labels_.find(k);
-  return it == face_labels_.end() ? kNoLabel : it->second;
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  if (const VertexLabels* l = list_at(a))
+    for (const FaceEntry& f : l->faces)
+      if (f.b == b && f.c == c) return f.label;
+  return kNoLabel;
 }
 
 void Submesh::set_edge_label(VertexId a, VertexId b, std::uint32_t label) {
   if (label == kNoLabel || a >= points_.size() || b >= points_.size() || a == b)
     throw std::logic_error("submesh: a label on an edge that cannot have one");
-  edge_labels_[edge_key(a, b)] = label;
-  labelled_.resize(points_.size(), 0);
-  labelled_[a] = labelled_[b] = 1;
+  if (a > b) std::swap(a, b);
+  std::vector<EdgeEntry>& edges = list_for(a).edges;
+  for (EdgeEntry& e : edges)
+    if (e.b == b) {
+      e.label = label;
+      return;
+    }
+  edges.push_back({b, label});
+  ++label_count_;
 }
 
 void Submesh::set_face_label(VertexId a, VertexId b, VertexId c, std::uint32_t label) {
-  Triple k{{a, b, c}};
-  std::sort(k.v.begin(), k.v.end());
-  if (label == kNoLabel || k.v[2] >= points_.size() || k.v[0] == k.v[1] || k.v[1] == k.v[2])
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  if (label == kNoLabel || c >= points_.size() || a == b || b == c)
     throw std::logic_error("submesh: a label on a face that cannot have one");
-  face_labels_[k] = label;
-  labelled_.resize(points_.size(), 0);
-  labelled_[a] = labelled_[b] = labelled_[c] = 1;
+  std::vector<FaceEntry>& faces = list_for(a).faces;
+  for (FaceEntry& f : faces)
+    if (f.b == b && f.c == c) {
+      f.label = label;
+      return;
+    }
+  faces.push_back({b, c, label});
+  ++label_count_;
 }
 
-void Submesh::erase_edge_label(VertexId a, VertexId b) { edge_labels_.erase(edge_key(a, b)); }
+void Submesh::erase_edge_label(VertexId a, VertexId b) {
+  if (a > b) std::swap(a, b);
+  if (a >= label_list_.size() || label_list_[a] == kNoList) return;
+  std::vector<EdgeEntry>& edges = lists_[label_list_[a]].edges;
+  for (EdgeEntry& e : edges)
+    if (e.b == b) {
+      e = edges.back();
+      edges.pop_back();
+      --label_count_;
+      return;
+    }
+}
 
 void Submesh::erase_face_label(VertexId a, VertexId b, VertexId c) {
-  Triple k{{a, b, c}};
-  std::sort(k.v.begin(), k.v.end());
-  face_labels_.erase(k);
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  if (a >= label_list_.size() || label_list_[a] == kNoList) return;
+  std::vector<FaceEntry>& faces = lists_[label_list_[a]].faces;
+  for (FaceEntry& f : faces)
+    if (f.b == b && f.c == c) {
+      f = faces.back();
+      faces.pop_back();
+      --label_count_;
+      return;
+    }
 }
 
 VertexId Submesh::find_vertex(Gid g) const {

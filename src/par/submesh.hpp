@@ -180,8 +180,7 @@ class Submesh {
   void set_inside(TetId t, bool in) {
     inside_[t] = static_cast<std::uint8_t>((inside_[t] & ~1) | (in ? 1 : 0));
   }
-  // M4: the label of edge {a, b} and of face {a, b, c} (local vertices), or kNoLabel. A
-  // vertex that no label touches answers at once (one byte per vertex).
+  // M4: the label of edge {a, b} and of face {a, b, c} (local vertices), or kNoLabel.
   std::uint32_t edge_label(VertexId a, VertexId b) const;
   std::uint32_t face_label(VertexId a, VertexId b, VertexId c) const;
   // Sets a label (not kNoLabel; the ghost vertex has none), or erases one.
@@ -189,7 +188,7 @@ class Submesh {
   void set_face_label(VertexId a, VertexId b, VertexId c, std::uint32_t label);
   void erase_edge_label(VertexId a, VertexId b);
   void erase_face_label(VertexId a, VertexId b, VertexId c);
-  std::size_t labels() const { return edge_labels_.size() + face_labels_.size(); }
+  std::size_t labels() const { return label_count_; }
   // The local vertex with global id g, or kNoVertex when it is not here.
   VertexId find_vertex(Gid g) const;
 
@@ -283,19 +282,29 @@ class Submesh {
   // which are most tets a commit deletes.
   std::vector<std::uint8_t> exposed_;
   std::unordered_map<Gid, std::vector<Relink>> waiting_;  // notices about tets on their way
-  // M4: labels by the sorted local ids of their vertices; per vertex, whether a label
-  // touches it (most do not: the lookups of their edges and faces end there).
-  struct Triple {
-    std::array<VertexId, 3> v{};
-    bool operator==(const Triple&) const = default;
+  // M4: labels by the sorted local ids of their vertices, listed at the smallest of them
+  // (a vertex on ∂Ω starts a few edges and faces of D; most vertices start none, and the
+  // lookups of their edges and faces end at one look).
+  struct EdgeEntry {
+    VertexId b;
+    std::uint32_t label;
   };
-  struct TripleHash {
-    std::size_t operator()(const Triple& k) const;
+  struct FaceEntry {
+    VertexId b, c;
+    std::uint32_t label;
   };
-  std::unordered_map<std::uint64_t, std::uint32_t> edge_labels_;
-  std::unordered_map<Triple, std::uint32_t, TripleHash> face_labels_;
-  std::vector<std::uint8_t> labelled_;
-  bool labelled(VertexId v) const { return v < labelled_.size() && labelled_[v] != 0; }
+  struct VertexLabels {
+    std::vector<EdgeEntry> edges;
+    std::vector<FaceEntry> faces;
+  };
+  static constexpr std::uint32_t kNoList = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> label_list_;  // per vertex: its index in lists_, or kNoList
+  std::vector<VertexLabels> lists_;
+  std::size_t label_count_ = 0;
+  const VertexLabels* list_at(VertexId v) const {
+    return v < label_list_.size() && label_list_[v] != kNoList ? &lists_[label_list_[v]] : nullptr;
+  }
+  VertexLabels& list_for(VertexId v);
   void collect_labels(std::span<const TetId> tets, Migration& m) const;
 };
 
