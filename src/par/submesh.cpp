@@ -181,18 +181,12 @@ FaceKey Submesh::key_of(TetId t, int f) const {
 }
 
 void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside) {
-  if (inside_.size() < store_.slots()) {
-    inside_.resize(store_.slots(), 0);
-    tet_gid_.resize(store_.slots(), kNoGid);
-    epoch_.resize(store_.slots(), 0);
-    exposed_.resize(store_.slots(), 0);
+  if (slot_.size() < store_.slots()) {
+    slot_.resize(store_.slots());
     side_.resize(store_.slots());
     taken_.resize(store_.slots(), 0);
   }
-  inside_[t] = inside;
-  exposed_[t] = 0;
-  tet_gid_[t] = g;
-  epoch_[t] = epoch;
+  slot_[t] = SlotInfo{g, epoch, inside, 0};
   if (g != kNoGid) index_tet(g, t);
 }
 
@@ -224,7 +218,7 @@ TetId Submesh::find_tet(Gid g) const {
   } else if (const auto it = tet_at_.find(g); it != tet_at_.end()) {
     t = it->second;
   }
-  return t != kNoTet && t < tet_gid_.size() && tet_gid_[t] == g && store_.is_alive(t) ? t : kNoTet;
+  return t != kNoTet && t < slot_.size() && slot_[t].gid == g && store_.is_alive(t) ? t : kNoTet;
 }
 
 TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
@@ -232,7 +226,7 @@ TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
   const TetId p = store_.create(store_.vertex(t, fv[0]), store_.vertex(t, fv[1]),
                                 store_.vertex(t, fv[2]), kRemoteVertex);
   record_tet(p, kNoGid, 0, 0);
-  exposed_[t] = 1;  // the submesh across now names t
+  slot_[t].exposed = 1;  // the submesh across now names t
   store_.link(half_face(t, f), half_face(p, 3));
   side_[p] = side;
   ++proxies_;
@@ -308,8 +302,8 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
   std::vector<TetId> drop;
   for (const TetId t : tets) {
     TetRecord r;
-    r.gid = tet_gid_[t];
-    r.epoch = epoch_[t] + 1;
+    r.gid = slot_[t].gid;
+    r.epoch = slot_[t].epoch + 1;
     const Claim now{to, r.epoch};
     for (int i = 0; i < 4; ++i) {
       const VertexId v = store_.vertex(t, i);
@@ -319,12 +313,12 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
         m.vertices.push_back({gid(v), points_[v], tags_[v]});
       }
     }
-    r.inside = inside_[t];
+    r.inside = slot_[t].inside;
     for (int f = 0; f < 4; ++f) {
       const TetId u = store_.neighbour(t, f);
       Side& across = r.across[static_cast<std::size_t>(f)];
       if (taken_[u] == takes_) {
-        across = Side{tet_gid_[u], Claim{kSameMigration, 0}};
+        across = Side{slot_[u].gid, Claim{kSameMigration, 0}};
       } else if (store_.is_proxy(u)) {
         across = side_[u];
         // Tell the submesh believed to hold the tet across. When that is this one (the tet
@@ -334,7 +328,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
                              across.claim.epoch});
         drop.push_back(u);
       } else {
-        across = Side{tet_gid_[u], Claim{id_, epoch_[u]}};
+        across = Side{slot_[u].gid, Claim{id_, slot_[u].epoch}};
         keep_faces.emplace_back(u, store_.back_face(t, f));
         keep_sides.push_back(Side{r.gid, now});
       }
@@ -346,7 +340,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
     add_proxy(keep_faces[i].first, keep_faces[i].second, keep_sides[i]);
   for (const TetId u : drop) drop_proxy(u);
   for (const TetId t : tets) {
-    unindex_tet(tet_gid_[t]);
+    unindex_tet(slot_[t].gid);
     record_tet(t, kNoGid, 0, 0);
     store_.destroy(t);
   }
@@ -363,7 +357,7 @@ std::vector<TetId> Submesh::give(const Migration& m) {
     for (int i = 0; i < 4; ++i) v[i] = local_vertex(r.v[static_cast<std::size_t>(i)], nullptr);
     const TetId t = store_.create(v[0], v[1], v[2], v[3]);
     record_tet(t, r.gid, r.epoch, r.inside);
-    exposed_[t] = 1;  // its old holder, and proxies elsewhere, may name it
+    slot_[t].exposed = 1;  // its old holder, and proxies elsewhere, may name it
     moved_.erase(r.gid);
     ids.push_back(t);
   }
@@ -406,7 +400,7 @@ std::vector<TetId> Submesh::give(const Migration& m) {
     store_.link(internal[i].second, internal[i + 1].second);
   }
   for (const TetId t : ids) {
-    const auto w = waiting_.find(tet_gid_[t]);
+    const auto w = waiting_.find(slot_[t].gid);
     if (w == waiting_.end()) continue;
     std::vector<Relink> notes = std::move(w->second);
     waiting_.erase(w);
@@ -418,8 +412,8 @@ std::vector<TetId> Submesh::give(const Migration& m) {
 VertexId Submesh::insert(const Cavity& c, std::uint8_t inside, std::uint8_t tag) {
   const VertexId v = local_vertex(fresh_vertex_gid(), &c.point, tag);
   for (const TetId t : c.conflict) {
-    unindex_tet(tet_gid_[t]);
-    if (exposed_[t] != 0) moved_[tet_gid_[t]] = Claim{kDeleted, ~std::uint32_t{0}};
+    unindex_tet(slot_[t].gid);
+    if (slot_[t].exposed != 0) moved_[slot_[t].gid] = Claim{kDeleted, ~std::uint32_t{0}};
   }
   committer_.commit(store_, c, v, points_.size());
   for (const TetId t : committer_.created()) record_tet(t, fresh_gid(), 0, inside);
@@ -464,8 +458,8 @@ std::vector<std::string> Submesh::check() const {
   for (TetId t = 0; t < store_.slots(); ++t) {
     if (!store_.is_alive(t)) continue;
     if (!store_.is_proxy(t)) {
-      if (!made_here(tet_gid_[t]) && tet_gid_[t] >= m0_slot_.size()) ++foreign;
-      if (find_tet(tet_gid_[t]) != t)
+      if (!made_here(slot_[t].gid) && slot_[t].gid >= m0_slot_.size()) ++foreign;
+      if (find_tet(slot_[t].gid) != t)
         out.push_back("submesh.tet-index: tet " + std::to_string(t) + " of submesh " +
                       std::to_string(id_) + " is not indexed by its global id");
       continue;

@@ -158,27 +158,27 @@ class Submesh {
   // known to be no element of D without a lookup, par/refinement_rules.hpp). 0 for the
   // ghost.
   std::uint8_t tag(VertexId v) const { return v < tags_.size() ? tags_[v] : 0; }
-  Gid tet_gid(TetId t) const { return tet_gid_[t]; }
+  Gid tet_gid(TetId t) const { return slot_[t].gid; }
   // The real tet with global id g, or kNoTet when it is not here.
   TetId find_tet(Gid g) const;
-  bool inside(TetId t) const { return t < inside_.size() && (inside_[t] & 1) != 0; }
+  bool inside(TetId t) const { return t < slot_.size() && (slot_[t].inside & 1) != 0; }
   // Refinement: the step of real tet t was deferred (par/refinement_rules.hpp); the mark
   // travels with the tet, so no rank takes that step up again in the parallel phase.
-  bool deferred(TetId t) const { return t < inside_.size() && (inside_[t] & 2) != 0; }
-  void mark_deferred(TetId t) { inside_[t] |= 2; }
+  bool deferred(TetId t) const { return t < slot_.size() && (slot_[t].inside & 2) != 0; }
+  void mark_deferred(TetId t) { slot_[t].inside |= 2; }
   // The refinement's verdict on real tet t (StepRules::wants), once computed: a fixed
   // property of the tet, so it travels with it and is not computed again on arrival.
   std::optional<bool> wanted(TetId t) const {
-    if (t >= inside_.size() || (inside_[t] & 4) == 0) return std::nullopt;
-    return (inside_[t] & 8) != 0;
+    if (t >= slot_.size() || (slot_[t].inside & 4) == 0) return std::nullopt;
+    return (slot_[t].inside & 8) != 0;
   }
   void set_wanted(TetId t, bool w) {
-    inside_[t] = static_cast<std::uint8_t>((inside_[t] & ~8) | 4 | (w ? 8 : 0));
+    slot_[t].inside = static_cast<std::uint8_t>((slot_[t].inside & ~8) | 4 | (w ? 8 : 0));
   }
   // Sets the inside flag of real tet t (a tet insert() just made: the refinement's flags
   // of a cavity that crosses ∂Ω).
   void set_inside(TetId t, bool in) {
-    inside_[t] = static_cast<std::uint8_t>((inside_[t] & ~1) | (in ? 1 : 0));
+    slot_[t].inside = static_cast<std::uint8_t>((slot_[t].inside & ~1) | (in ? 1 : 0));
   }
   // M4: the label of edge {a, b} and of face {a, b, c} (local vertices), or kNoLabel.
   std::uint32_t edge_label(VertexId a, VertexId b) const;
@@ -256,11 +256,20 @@ class Submesh {
   std::vector<VertexId> m0_local_;
   std::vector<std::vector<VertexId>> fresh_local_;
   std::unordered_map<Gid, VertexId> local_;
-  std::vector<std::uint8_t> inside_;      // per slot
-  std::vector<Gid> tet_gid_;              // per slot
-  std::vector<std::uint32_t> epoch_;      // per slot
+  // Per slot, together (a tet's step reads most of them at once): its global id, epoch,
+  // flags (inside, deferred, wanted: TetRecord::inside), and whether another submesh may
+  // name this tet (it was glued to a proxy, or arrived by migration: only such a tet's
+  // deletion is recorded, since no message can name the others, which are most tets a
+  // commit deletes).
+  struct SlotInfo {
+    Gid gid = kNoGid;
+    std::uint32_t epoch = 0;
+    std::uint8_t inside = 0;
+    std::uint8_t exposed = 0;
+  };
+  std::vector<SlotInfo> slot_;
   // Real tets by global id: those made here by slot_of_serial_[serial], with a dense
-  // index M_o's by m0_slot_[gid], each checked against tet_gid_ (a slot freed or reused no
+  // index M_o's by m0_slot_[gid], each checked against slot_'s gid (a slot freed or reused no
   // longer matches, so nothing is erased: the hot paths touch no hash map); the others in
   // tet_at_, which holds only the tets here.
   std::vector<TetId> slot_of_serial_;
@@ -277,10 +286,6 @@ class Submesh {
   std::unordered_map<FaceKey, TetId, FaceKeyHash> proxy_at_;
   std::unordered_map<Gid, Claim> moved_;   // tets given away: the latest hand-over;
                                            // deleted tets another submesh may name
-  // Per slot: another submesh may name this tet (it was glued to a proxy, or arrived by
-  // migration). Only such a tet's deletion is recorded: no message can name the others,
-  // which are most tets a commit deletes.
-  std::vector<std::uint8_t> exposed_;
   std::unordered_map<Gid, std::vector<Relink>> waiting_;  // notices about tets on their way
   // M4: labels by the sorted local ids of their vertices, listed at the smallest of them
   // (a vertex on ∂Ω starts a few edges and faces of D; most vertices start none, and the
