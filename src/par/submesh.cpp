@@ -15,6 +15,14 @@ FaceKey face_key(Gid a, Gid b, Gid c) {
   return k;
 }
 
+std::size_t GidHash::operator()(Gid g) const {
+  g ^= g >> 30;
+  g *= 0xBF58476D1CE4E5B9ull;
+  g ^= g >> 27;
+  g *= 0x94D049BB133111EBull;
+  return static_cast<std::size_t>(g ^ (g >> 31));
+}
+
 std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
   std::uint64_t h = 0x9E3779B97F4A7C15ull;
   for (const Gid g : k.v) {
@@ -215,8 +223,8 @@ TetId Submesh::find_tet(Gid g) const {
     if (serial < slot_of_serial_.size()) t = slot_of_serial_[serial];
   } else if (g < m0_slot_.size()) {
     t = m0_slot_[static_cast<std::size_t>(g)];
-  } else if (const auto it = tet_at_.find(g); it != tet_at_.end()) {
-    t = it->second;
+  } else if (const TetId* at = tet_at_.find(g)) {
+    t = *at;
   }
   return t != kNoTet && t < slot_.size() && slot_[t].gid == g && store_.is_alive(t) ? t : kNoTet;
 }
@@ -376,9 +384,9 @@ std::vector<TetId> Submesh::give(const Migration& m) {
         internal.emplace_back(k, half_face(t, f));
         continue;
       }
-      if (const auto it = proxy_at_.find(k); it != proxy_at_.end()) {
+      if (const TetId* at = proxy_at_.find(k)) {
         // The other side is here: glue to the tet behind the proxy.
-        const TetId proxy = it->second;
+        const TetId proxy = *at;
         const HalfFace back = store_.opposite(proxy, 3);
         drop_proxy(proxy);
         store_.link(half_face(t, f), back);
@@ -388,7 +396,7 @@ std::vector<TetId> Submesh::give(const Migration& m) {
       // names this submesh until the tet arrives and replaces it). If this submesh gave
       // that tet away, its own record of the move may be newer than the migration's.
       const TetId p = add_proxy(t, f, across);
-      if (const auto gone = moved_.find(across.tet); gone != moved_.end()) claim(p, gone->second);
+      if (const Claim* gone = moved_.find(across.tet)) claim(p, *gone);
     }
   }
   std::sort(internal.begin(), internal.end(),
@@ -425,9 +433,8 @@ bool Submesh::relink(Relink& r) {
     // A proxy on that face, unless the moved tet is here too (then the face is inside),
     // and only one that still names the moved tet: after a commit, a new tet may have
     // the same face.
-    if (const auto it = proxy_at_.find(r.face);
-        it != proxy_at_.end() && side_[it->second].tet == r.tet)
-      claim(it->second, r.claim);
+    if (const TetId* at = proxy_at_.find(r.face); at != nullptr && side_[*at].tet == r.tet)
+      claim(*at, r.claim);
     return true;
   }
   if (const auto next = moved(r.about, r.about_epoch)) {
@@ -441,8 +448,7 @@ bool Submesh::relink(Relink& r) {
 }
 
 std::optional<Claim> Submesh::moved(Gid g, std::uint32_t after) const {
-  if (const auto gone = moved_.find(g); gone != moved_.end() && gone->second.epoch > after)
-    return gone->second;
+  if (const Claim* gone = moved_.find(g); gone != nullptr && gone->epoch > after) return *gone;
   return std::nullopt;
 }
 
@@ -465,8 +471,8 @@ std::vector<std::string> Submesh::check() const {
       continue;
     }
     ++proxies;
-    const auto it = proxy_at_.find(key_of(t, 3));
-    if (it == proxy_at_.end() || it->second != t || side_[t].tet == kNoGid)
+    const TetId* at = proxy_at_.find(key_of(t, 3));
+    if (at == nullptr || *at != t || side_[t].tet == kNoGid)
       out.push_back("submesh.proxy-index: proxy " + std::to_string(t) + " of submesh " +
                     std::to_string(id_) + " is not indexed by its face");
   }

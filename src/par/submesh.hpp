@@ -56,6 +56,7 @@
 #include "delaunay/insert.hpp"
 #include "geom/point.hpp"
 #include "mesh/tet_store.hpp"
+#include "par/flat_hash_map.hpp"
 #include "par/partition.hpp"
 
 namespace pdr::par {
@@ -76,6 +77,9 @@ struct FaceKey {
 FaceKey face_key(Gid a, Gid b, Gid c);
 struct FaceKeyHash {
   std::size_t operator()(const FaceKey& k) const;
+};
+struct GidHash {  // a mix of all 64 bits (global ids count up in their low bits)
+  std::size_t operator()(Gid g) const;
 };
 
 // "Tet t is at `holder`, as of its epoch-th move."
@@ -274,7 +278,7 @@ class Submesh {
   // tet_at_, which holds only the tets here.
   std::vector<TetId> slot_of_serial_;
   std::vector<TetId> m0_slot_;
-  std::unordered_map<Gid, TetId> tet_at_;
+  FlatHashMap<Gid, TetId, GidHash> tet_at_;
   bool made_here(Gid g) const { return g >> 40 == Gid{id_} + 1; }
   void index_tet(Gid g, TetId t);
   void unindex_tet(Gid g);
@@ -283,8 +287,8 @@ class Submesh {
   // take(): per slot and per vertex, the take() that last marked it.
   std::vector<std::uint32_t> taken_, seen_;
   std::uint32_t takes_ = 0;
-  std::unordered_map<FaceKey, TetId, FaceKeyHash> proxy_at_;
-  std::unordered_map<Gid, Claim> moved_;   // tets given away: the latest hand-over;
+  FlatHashMap<FaceKey, TetId, FaceKeyHash> proxy_at_;
+  FlatHashMap<Gid, Claim, GidHash> moved_;   // tets given away: the latest hand-over;
                                            // deleted tets another submesh may name
   std::unordered_map<Gid, std::vector<Relink>> waiting_;  // notices about tets on their way
   // M4: labels by the sorted local ids of their vertices, listed at the smallest of them
