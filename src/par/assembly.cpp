@@ -66,6 +66,25 @@ Assembly::Assembly(const refine::VolumeMesh& m, std::size_t tets)
   inside_.reserve(tets);
 }
 
+VertexId* Assembly::fresh_slot(Gid g) {
+  const auto m = made_vertex(g);
+  if (!m) throw std::logic_error("assembly: vertex " + std::to_string(g) + " is neither M_o's nor made in the phase");
+  if (fresh_.size() <= m->maker) fresh_.resize(m->maker + 1);
+  std::vector<VertexId>& by = fresh_[m->maker];
+  if (by.size() <= m->serial) by.resize(m->serial + m->serial / 2 + 64, kNoVertex);
+  return &by[m->serial];
+}
+
+VertexId Assembly::vertex(Gid g) const {
+  if (g < n0_) return static_cast<VertexId>(g);
+  const auto m = made_vertex(g);
+  const VertexId v = m && m->maker < fresh_.size() && m->serial < fresh_[m->maker].size()
+                         ? fresh_[m->maker][m->serial]
+                         : kNoVertex;
+  if (v == kNoVertex) throw std::logic_error("assembly: vertex " + std::to_string(g) + " is in no piece");
+  return v;
+}
+
 void Assembly::add(const Piece& p) {
   vmap_.clear();
   for (const VertexRecord& v : p.vertices) {
@@ -73,15 +92,18 @@ void Assembly::add(const Piece& p) {
       vmap_.push_back(static_cast<VertexId>(v.gid));
       continue;
     }
-    const auto [it, added] = fresh_.try_emplace(v.gid, static_cast<VertexId>(points_.size()));
-    if (added) {
+    VertexId* at = fresh_slot(v.gid);
+    if (*at == kNoVertex) {
+      *at = static_cast<VertexId>(points_.size());
       points_.push_back(v.p);
       fresh_tet_.push_back(kNoTet);
     }
-    vmap_.push_back(it->second);
+    vmap_.push_back(*at);
   }
   const auto vertex = [&](std::uint32_t i) {
-    return i == kGhostVertex ? kGhostVertex : vmap_.at(i);
+    if (i == kGhostVertex) return kGhostVertex;
+    if (i >= vmap_.size()) throw std::logic_error("assembly: a piece's tet names no vertex of it");
+    return vmap_[i];
   };
   ids_.clear();
   for (const PieceTet& x : p.tets) {

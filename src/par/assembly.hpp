@@ -35,7 +35,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
+#include <stdexcept>
 #include <vector>
 
 #include "par/refinement_rules.hpp"
@@ -94,7 +94,10 @@ class Assembly {
   Assembled finish(refine::VolumeMesh& m, std::span<const SurfaceStep> steps = {});
 
  private:
-  VertexId vertex(Gid g) const { return g < n0_ ? static_cast<VertexId>(g) : fresh_.at(g); }
+  VertexId vertex(Gid g) const;
+  // add(): where the id of vertex g, made in the phase, is kept (by maker and serial,
+  // par/submesh.hpp made_vertex); kNoVertex there until a piece brings it.
+  VertexId* fresh_slot(Gid g);
   void change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const;
   struct OpenFace {  // a face towards another piece: its vertex ids, sorted
     std::array<VertexId, 3> key;
@@ -102,7 +105,7 @@ class Assembly {
   };
   std::size_t n0_;
   std::vector<Point> points_;
-  std::unordered_map<Gid, VertexId> fresh_;  // vertices made in the parallel phase
+  std::vector<std::vector<VertexId>> fresh_;  // vertices made in the parallel phase
   std::vector<TetId> fresh_tet_;             // per vertex made: a tet holding it
   TetStore st_;
   std::vector<std::uint8_t> inside_;

@@ -120,25 +120,21 @@ void Submesh::erase_face_label(VertexId a, VertexId b, VertexId c) {
 VertexId Submesh::find_vertex(Gid g) const {
   if (g == kGhostGid) return kGhostVertex;
   if (g < m0_local_.size()) return m0_local_[static_cast<std::size_t>(g)];
-  if (dense_ && (g & kVertexBit) != 0 && (g >> 40) != 0) {
-    const std::size_t by = static_cast<std::size_t>((g >> 40) - 1);
-    const std::size_t serial = static_cast<std::size_t>(g & (kVertexBit - 1));
-    return by < fresh_local_.size() && serial < fresh_local_[by].size() ? fresh_local_[by][serial]
-                                                                          : kNoVertex;
-  }
+  if (const auto m = made_vertex(g); dense_ && m)
+    return m->maker < fresh_local_.size() && m->serial < fresh_local_[m->maker].size()
+               ? fresh_local_[m->maker][m->serial]
+               : kNoVertex;
   const auto it = local_.find(g);
   return it == local_.end() ? kNoVertex : it->second;
 }
 
 VertexId* Submesh::vertex_slot(Gid g) {
   if (g < m0_local_.size()) return &m0_local_[static_cast<std::size_t>(g)];
-  if (dense_ && (g & kVertexBit) != 0 && (g >> 40) != 0) {
-    const std::size_t by = static_cast<std::size_t>((g >> 40) - 1);
-    const std::size_t serial = static_cast<std::size_t>(g & (kVertexBit - 1));
-    if (fresh_local_.size() <= by) fresh_local_.resize(by + 1);
-    std::vector<VertexId>& v = fresh_local_[by];
-    if (v.size() <= serial) v.resize(serial + serial / 2 + 64, kNoVertex);
-    return &v[serial];
+  if (const auto m = made_vertex(g); dense_ && m) {
+    if (fresh_local_.size() <= m->maker) fresh_local_.resize(m->maker + 1);
+    std::vector<VertexId>& v = fresh_local_[m->maker];
+    if (v.size() <= m->serial) v.resize(m->serial + m->serial / 2 + 64, kNoVertex);
+    return &v[m->serial];
   }
   return &local_.try_emplace(g, kNoVertex).first->second;
 }

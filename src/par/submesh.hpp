@@ -82,6 +82,18 @@ struct GidHash {  // a mix of all 64 bits (global ids count up in their low bits
   std::size_t operator()(Gid g) const;
 };
 
+// A vertex made in the parallel phase (Submesh::insert): its global id holds the submesh
+// that made it and its serial there. Empty for any other global id (M_o's, a tet's).
+struct MadeVertex {
+  std::size_t maker = 0, serial = 0;
+};
+inline constexpr Gid kVertexBit = Gid{1} << 39;  // set in a made vertex's global id
+inline std::optional<MadeVertex> made_vertex(Gid g) {
+  if ((g >> 40) == 0 || (g & kVertexBit) == 0 || g >= kNoGid) return std::nullopt;
+  return MadeVertex{static_cast<std::size_t>((g >> 40) - 1),
+                    static_cast<std::size_t>(g & (kVertexBit - 1))};
+}
+
 // "Tet t is at `holder`, as of its epoch-th move."
 struct Claim {
   ActorId holder = 0;
@@ -241,7 +253,6 @@ class Submesh {
 
   // Fresh global ids: (id + 1) * 2^40 + serial for a tet, with 2^39 added and a serial of
   // their own for a vertex; M_o's are below 2^40.
-  static constexpr Gid kVertexBit = Gid{1} << 39;
   Gid fresh_gid() { return (Gid{id_} + 1) << 40 | serial_++; }
   Gid fresh_vertex_gid() { return (Gid{id_} + 1) << 40 | kVertexBit | vertex_serial_++; }
   // Where the local id of vertex g is kept (kNoVertex there: not here yet).
