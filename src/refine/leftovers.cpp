@@ -15,11 +15,14 @@ const std::string* RefusedTets::reason(const std::array<VertexId, 4>& v) const {
 
 std::vector<Leftover> collect_leftovers(const VolumeMesh& m, double ratio,
                                         const RefusedTets& refused,
-                                        const std::string& stop_reason) {
+                                        const std::string& stop_reason,
+                                        const std::vector<TetId>* among) {
   std::vector<Leftover> out;
   const TetStore& s = m.dt.store();
-  for (TetId t = 0; t < s.slots(); ++t) {
-    if (!s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
+  const std::size_t n = among ? among->size() : s.slots();
+  for (std::size_t i = 0; i < n; ++i) {
+    const TetId t = among ? (*among)[i] : static_cast<TetId>(i);
+    if (t >= s.slots() || !s.is_alive(t) || s.is_ghost(t) || !m.is_inside(t)) continue;
     const VertexId* v = s.vertices(t);
     const Point &a = m.dt.point(v[0]), &b = m.dt.point(v[1]), &c = m.dt.point(v[2]),
                 &d = m.dt.point(v[3]);

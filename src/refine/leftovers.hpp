@@ -30,9 +30,11 @@ class RefusedTets {
 };
 
 // Every inside tet of m with ratio >= B (exact), with its reason: the refusal recorded for
-// it, else `stop_reason` (the cap), else "refine.unrefined: never refined".
+// it, else `stop_reason` (the cap), else "refine.unrefined: never refined". With `among`,
+// only those of these tets (live ones; the caller knows every other tet meets B).
 std::vector<Leftover> collect_leftovers(const VolumeMesh& m, double ratio,
                                         const RefusedTets& refused,
-                                        const std::string& stop_reason);
+                                        const std::string& stop_reason,
+                                        const std::vector<TetId>* among = nullptr);
 
 }  // namespace pdr::refine

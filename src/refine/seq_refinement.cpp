@@ -50,6 +50,7 @@ class Refiner {
   // the guards found come first (subsegments, then subfacets); the budget ends the loop.
   RefineResult run() {
     res_.stats.vertex_cap = budget_.cap();
+    const std::size_t points_at_start = m_.dt.num_points();
     res_.stats.h = std::numeric_limits<double>::infinity();
     // The theorem's h where its hypotheses hold: exactly, with T_o holding every subsegment
     // and subfacet of D (§2.1 property 1) and none of them encroached (invariant 1 at the
@@ -108,7 +109,13 @@ class Refiner {
     }
     abandon_missing();
     refused_.seal();
-    res_.leftovers = collect_leftovers(m_, o_.ratio, refused_, res_.stop_reason);
+    // From given start tets, with no vertex added and no flag changed since, the tets are
+    // those of the start, and only the start tets may miss the bounds
+    // (RefineOptions::start_tets).
+    const bool unchanged = o_.start_tets && m_.dt.num_points() == points_at_start &&
+                           res_.stats.flag_repairs == 0 && res_.stats.conformity_breaks == 0;
+    res_.leftovers = collect_leftovers(m_, o_.ratio, refused_, res_.stop_reason,
+                                       unchanged ? &*o_.start_tets : nullptr);
     return std::move(res_);
   }
 

@@ -12,6 +12,7 @@
 #include "io/mesh_io.hpp"
 #include "refine/audit.hpp"
 #include "refine/initial.hpp"
+#include "refine/leftovers.hpp"
 #include "refine/seq_refinement.hpp"
 #include "refine/split.hpp"
 #include "surface/init.hpp"
@@ -45,6 +46,28 @@ MeshRun mesh(const std::string& name, std::optional<double> max_volume) {
   if (r.rr.stats.h_theorem > 0) co.min_edge = r.rr.stats.h_theorem;  // Theorem 1 (1), a priori
   r.report = check::check_mesh(check::view_of(m), an.domain.plc, co);
   return r;
+}
+
+// A run from given start tets (every other tet meeting the bounds) that the vertex cap
+// stops before its first vertex lists, from the start tets alone, exactly the tets with
+// ratio >= B that a scan of every tet finds.
+TEST(RefineMesh, StartTetsStoppedAtOnceListTheLeftoversOfAFullScan) {
+  const Plc plc = io::read_domain(std::string(PDR_DATA_DIR) + "/cube-in-cube.poly");
+  DomainAnalysis an = analyze(plc);
+  VolumeMesh vm = build_initial(init_surface(an).mesh, an.domain.plc.holes);
+  RefineOptions o;
+  set_domain(o, an);
+  o.ratio = 1.2;  // T_o's tets all have ratio < 2; a run with B = 1.2 has some to refine
+  const std::vector<Leftover> all = collect_leftovers(vm, o.ratio, RefusedTets{}, "");
+  ASSERT_GT(all.size(), 0u);  // T_o has tets to refine
+  std::vector<TetId> start;
+  for (const Leftover& l : all) start.push_back(l.tet);
+  o.start_tets = start;
+  o.max_vertices = vm.dt.num_points();
+  const RefineResult rr = refine(vm, o);
+  ASSERT_EQ(vm.dt.num_points(), o.max_vertices);
+  ASSERT_EQ(rr.leftovers.size(), all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(rr.leftovers[i].v, all[i].v);
 }
 
 TEST(RefineMesh, AdmissibleDomainsPassEveryCheck) {
