@@ -293,12 +293,14 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // queued at the start, not every tet tested again.
   refine::RefineOptions rest = opt;
   if (distribute) rest.start_tets = std::move(assembled.deferred);
-  // T_o met Theorem 1's hypotheses exactly (the coarse run found its h) and every point
+  // T_o met Theorem 1's hypotheses exactly (the coarse run found its h), every point
   // since was a step of Fig. 2 (the coarse run's, then the phase's, each rank's tested by
-  // the same rules), with D whole in T: the completion resumes that run, with T_o's h
+  // the same rules), D is whole in T, and nothing is encroached around the phase's points
+  // on ∂Ω (the only ones it inserted without testing what they encroach: Lemma 1 says
+  // nothing, par/assembly.hpp checks): the completion resumes that run, with T_o's h
   // under the final bounds (refine::RefineOptions::resumed_h).
   if (distribute && coarse.stats.h_theorem > 0 && vm.missing_subfacets.empty() &&
-      vm.missing_subsegments.empty())
+      vm.missing_subsegments.empty() && assembled.encroached == 0)
     rest.resumed_h = refine::theorem_h(shortest_t0, opt);
   return refine::refine(vm, rest);
 }

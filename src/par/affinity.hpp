@@ -12,16 +12,18 @@
 #pragma once
 
 #include <sched.h>
-#include <unistd.h>
+
+#include <cstdlib>
 
 namespace pdr::par {
 
-// True when the mask was widened (false: refused; the binding stays).
+// True when the mask was widened (false: refused, or PDR_KEEP_BINDING is set in the
+// environment, for a user who pinned the ranks on purpose; the binding stays).
 inline bool use_every_cpu() {
+  if (std::getenv("PDR_KEEP_BINDING") != nullptr) return false;
   cpu_set_t all;
   CPU_ZERO(&all);
-  const long n = sysconf(_SC_NPROCESSORS_CONF);
-  for (long c = 0; c < n && c < CPU_SETSIZE; ++c) CPU_SET(static_cast<int>(c), &all);
+  for (int c = 0; c < CPU_SETSIZE; ++c) CPU_SET(c, &all);  // the kernel keeps the allowed
   return sched_setaffinity(0, sizeof all, &all) == 0;
 }
 

@@ -7,6 +7,7 @@
 
 #include "mesh/tables.hpp"
 #include "refine/conformity.hpp"
+#include "refine/guard.hpp"
 #include "surface/cavity.hpp"
 #include "surface/locate.hpp"
 #include "surface/split.hpp"
@@ -149,11 +150,11 @@ Assembled Assembly::finish(refine::VolumeMesh& m, std::span<const SurfaceStep> s
   m.inside = std::move(inside_);
   for (std::size_t v = n0_; v < n0_ + out_.added; ++v)
     m.map_vertex(static_cast<VertexId>(v), refine::kNone);
-  change_d(m, steps);
+  out_.encroached = change_d(m, steps);
   return std::move(out_);
 }
 
-void Assembly::change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const {
+std::size_t Assembly::change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const {
   const auto fail = [](const std::string& what) {
     throw std::logic_error("assembly: the phase's change of D cannot be made: " + what);
   };
@@ -210,15 +211,17 @@ void Assembly::change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> step
     todo.swap(later);
   }
   // Once D has them all (T has every new vertex already).
-  refine::EncroachedLists missing;
+  refine::EncroachedLists missing, encroached;
   std::vector<TetId> star;
   for (const SurfaceStep& r : steps) {
     const VertexId v = vertex(r.m);
     refine::vertex_star(m, v, fresh_tet_[v - n0_], star);
     refine::missing_at(m, v, star, missing);
+    refine::find_encroached(m, star, encroached);
   }
   for (const refine::Encroached& e : missing.subsegments) m.missing_subsegments.push_back(e.id);
   for (const refine::Encroached& e : missing.subfacets) m.missing_subfacets.push_back(e.id);
+  return encroached.subsegments.size() + encroached.subfacets.size();
 }
 
 Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,

@@ -29,7 +29,9 @@
 // vertex. For the domains the phase takes these steps in (exact constructions on ∂Ω)
 // this is the change the phase made to its labels; an element of D at a new vertex that
 // is not an edge or face of T is listed as missing (VolumeMesh::missing_subfacets),
-// which the completion restores as it restores T_o's (refine/conformity.hpp).
+// which the completion restores as it restores T_o's (refine/conformity.hpp). The same
+// stars are searched for encroached elements (Assembled::encroached): the points on ∂Ω
+// are the only ones the phase inserted without testing the elements they encroach.
 #pragma once
 
 #include <array>
@@ -71,6 +73,10 @@ Piece get_piece(WireReader& r);
 struct Assembled {
   std::size_t added = 0;        // vertices appended
   std::vector<TetId> deferred;  // the tets marked deferred, by their new ids
+  // Elements of D encroached (strictly, refine/guard.hpp) among those of the tets around
+  // the phase's points on ∂Ω: Lemma 1 says none in an admissible domain; the completion
+  // trusts the phase only when none is (app/parallel.cpp, RefineOptions::resumed_h).
+  std::size_t encroached = 0;
 };
 
 // Replaces m's tets by the union of `pieces` (the submeshes of a partition of m after the
@@ -98,7 +104,8 @@ class Assembly {
   // add(): where the id of vertex g, made in the phase, is kept (by maker and serial,
   // par/submesh.hpp made_vertex); kNoVertex there until a piece brings it.
   VertexId* fresh_slot(Gid g);
-  void change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const;
+  // Returns how many elements are encroached around the steps' points (Assembled).
+  std::size_t change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const;
   struct OpenFace {  // a face towards another piece: its vertex ids, sorted
     std::array<VertexId, 3> key;
     HalfFace h;

@@ -7,7 +7,8 @@
 //        hash(key) & mask towards higher slots (cyclically) without meeting an empty slot;
 //   (H2) erase() keeps H1 by shifting later entries of the same probe run back into the
 //        hole (backward-shift deletion: no tombstones, so probe runs stay short).
-// References returned by find() and operator[] are valid until the next insertion.
+// A pointer or reference returned by find() or operator[] is valid until the next
+// operator[] (which may grow the table) or erase() (which may shift entries).
 #pragma once
 
 #include <cstddef>
@@ -20,6 +21,26 @@ namespace pdr::par {
 template <class K, class V, class Hash>
 class FlatHashMap {
  public:
+  FlatHashMap() = default;
+  FlatHashMap(const FlatHashMap&) = default;
+  FlatHashMap& operator=(const FlatHashMap&) = default;
+  // A moved-from map is empty and usable.
+  FlatHashMap(FlatHashMap&& o) noexcept
+      : slots_(std::move(o.slots_)), used_(std::move(o.used_)),
+        size_(std::exchange(o.size_, 0)), mask_(std::exchange(o.mask_, 0)) {
+    o.slots_.clear();
+    o.used_.clear();
+  }
+  FlatHashMap& operator=(FlatHashMap&& o) noexcept {
+    slots_ = std::move(o.slots_);
+    used_ = std::move(o.used_);
+    size_ = std::exchange(o.size_, 0);
+    mask_ = std::exchange(o.mask_, 0);
+    o.slots_.clear();
+    o.used_.clear();
+    return *this;
+  }
+
   std::size_t size() const { return size_; }
 
   const V* find(const K& k) const {

@@ -378,9 +378,10 @@ void InsertionActor::receive(int, std::span<const std::byte> bytes) {
     case Type::Tets: take_tets(r); break;
     case Type::Refuse: reply_in(true); break;
     case Type::Relink: {
-      std::vector<Relink> notes = r.get_vector<Relink>();
-      std::erase_if(notes, [&](Relink& n) { return sub_.relink(n); });
-      send_relinks(notes);  // those to go on
+      std::vector<Relink> onward;  // notices to go on, as relink() readdressed them
+      for (Relink n : r.get_vector<Relink>())
+        if (!sub_.relink(n)) onward.push_back(n);
+      send_relinks(onward);
       break;
     }
     case Type::Point: {

@@ -105,9 +105,11 @@ struct RefineOptions {
   // constructions on ∂Ω are exact, app/parallel.hpp): Theorem 1's h of T_o under this
   // run's bounds (theorem_h). The run takes it as its h_theorem, rather than one computed
   // from the mesh it starts from (whose shortest edge every edge trivially exceeds), and
-  // skips the scan of every tet for encroached elements at the start: each step inserted
-  // its point only where the point encroached no element of its closure, and an element
-  // of D that a point encroaches lies in that point's closure, so none is encroached.
+  // skips the scan of every tet for encroached elements at the start: the caller has
+  // made sure none is (a tet's circumcenter goes in only where it encroaches no element
+  // of its closure, and an element a point encroaches is an element of a tet around that
+  // point, refine/guard.hpp; the points on ∂Ω, held to no such test, encroach nothing by
+  // Lemma 1, which the caller checks around them).
   std::optional<double> resumed_h;
 };
 

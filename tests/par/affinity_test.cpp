@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <thread>
 
 namespace pdr::par {
@@ -33,6 +34,23 @@ TEST(Affinity, BoundThreadGetsEveryAllowedCpuBack) {
   int in_thread = 0;
   std::thread([&] { in_thread = allowed_cpus(); }).join();
   EXPECT_GE(in_thread, before);
+}
+
+// PDR_KEEP_BINDING: the binding a user asked for stays.
+TEST(Affinity, KeepBindingLeavesTheMask) {
+  cpu_set_t saved;
+  ASSERT_EQ(sched_getaffinity(0, sizeof saved, &saved), 0);
+  int first = 0;
+  while (!CPU_ISSET(first, &saved)) ++first;
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  setenv("PDR_KEEP_BINDING", "1", 1);
+  EXPECT_FALSE(use_every_cpu());
+  unsetenv("PDR_KEEP_BINDING");
+  EXPECT_EQ(allowed_cpus(), 1);
+  ASSERT_EQ(sched_setaffinity(0, sizeof saved, &saved), 0);
 }
 
 }  // namespace

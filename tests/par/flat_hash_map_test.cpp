@@ -47,5 +47,21 @@ RC_GTEST_PROP(FlatHashMap, BehavesAsAMap, ()) {
   }
 }
 
+TEST(FlatHashMap, MovedFromIsEmptyAndUsable) {
+  FlatHashMap<std::uint64_t, int, Crowded> a;
+  for (std::uint64_t k = 0; k < 40; ++k) a[k] = static_cast<int>(k);
+  FlatHashMap<std::uint64_t, int, Crowded> b = std::move(a);
+  EXPECT_EQ(b.size(), 40u);
+  EXPECT_EQ(*b.find(7), 7);
+  EXPECT_EQ(a.size(), 0u);  // NOLINT(bugprone-use-after-move): the contract under test
+  EXPECT_EQ(a.find(7), nullptr);
+  EXPECT_FALSE(a.erase(7));
+  a[3] = 9;
+  EXPECT_EQ(*a.find(3), 9);
+  b = std::move(a);
+  EXPECT_EQ(b.size(), 1u);
+  EXPECT_EQ(a.find(3), nullptr);
+}
+
 }  // namespace
 }  // namespace pdr::par

@@ -337,6 +337,7 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
       EXPECT_TRUE(enc.subsegments.empty() && enc.subfacets.empty())
           << "seed " << seed << ": " << enc.subsegments.size() << " subsegments and "
           << enc.subfacets.size() << " subfacets encroached after the phase";
+      EXPECT_EQ(assembled.encroached, 0u) << "seed " << seed;
     }
     EXPECT_TRUE(all_tets(g) == all_tets(m)) << "seed " << seed << ": assembly differs from insertion";
     EXPECT_EQ(g.dt.num_points(), m.dt.num_points());
