@@ -93,29 +93,19 @@ MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc, std::size_t 
   return mesh;
 }
 
-void quality_summary(const MeshData& mesh, Summary& summary) {
-  double rmin = std::numeric_limits<double>::infinity(), rmax = 0;
-  double dmin = 180, dmax = 0, lmin2 = std::numeric_limits<double>::infinity();
-  for (const auto& t : mesh.tets) {
-    const Point &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]],
-                &d = mesh.points[t[3]];
-    const double r = refine::ratio_of(a, b, c, d);
-    rmin = std::min(rmin, r);
-    rmax = std::max(rmax, r);
-    refine::dihedral_range(a, b, c, d, dmin, dmax);
-    const Point* p[4] = {&a, &b, &c, &d};
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) {
-        double s = 0;
-        for (int k = 0; k < 3; ++k) s += ((*p[i])[k] - (*p[j])[k]) * ((*p[i])[k] - (*p[j])[k]);
-        lmin2 = std::min(lmin2, s);
-      }
-  }
-  summary.set("ratio_min", mesh.tets.empty() ? 0.0 : rmin);
-  summary.set("ratio_max", rmax);
-  summary.set("dihedral_min_deg", dmin);
-  summary.set("dihedral_max_deg", dmax);
-  summary.set("shortest_edge", std::isfinite(lmin2) ? std::sqrt(lmin2) : 0.0);
+void quality_summary(const refine::QualityRange& q, Summary& summary) {
+  summary.set("ratio_min", q.tets == 0 ? 0.0 : q.ratio_min);
+  summary.set("ratio_max", q.ratio_max);
+  summary.set("dihedral_min_deg", q.dihedral_min);
+  summary.set("dihedral_max_deg", q.dihedral_max);
+  summary.set("shortest_edge", std::isfinite(q.shortest2) ? std::sqrt(q.shortest2) : 0.0);
+}
+
+refine::QualityRange quality_of(const MeshData& mesh) {
+  refine::QualityRange q;
+  for (const auto& t : mesh.tets)
+    q.add(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
+  return q;
 }
 
 }  // namespace
@@ -235,10 +225,12 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                            std::find(formats.begin(), formats.end(), io::MeshFormat::Vtu) !=
                                formats.end();
   VertexOwners owners;
+  std::optional<refine::QualityRange> ranks_quality;  // the ranks' figures, when whole
   std::optional<refine::RefineResult> refined =
       world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.submeshes,
                                             args.inject_latency_us, args.seed, summary, timer,
-                                            t_before, partitioned ? &owners : nullptr)
+                                            t_before, partitioned ? &owners : nullptr,
+                                            ranks_quality)
                        : refine::refine(vm, opt);
   if (!refined) return kExitOk;  // not rank 0: rank 0 writes, checks and decides the code
   const refine::RefineResult& rr = *refined;
@@ -280,7 +272,11 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   summary.set("tets_per_second",
               t_refine > 0 ? static_cast<double>(mesh.tets.size()) / t_refine : 0.0);
   summary.set("topology_bytes", vm.dt.store().bytes_allocated());
-  quality_summary(mesh, summary);
+  if (ranks_quality && ranks_quality->tets != mesh.tets.size())
+    throw std::logic_error("the ranks' quality figures cover " +
+                           std::to_string(ranks_quality->tets) + " tets, the mesh has " +
+                           std::to_string(mesh.tets.size()));
+  quality_summary(ranks_quality ? *ranks_quality : quality_of(mesh), summary);
   if (!rr.leftovers.empty()) {
     nlohmann::json left = nlohmann::json::array();
     for (const auto& l : rr.leftovers) {

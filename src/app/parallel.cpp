@@ -161,7 +161,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,
-                                                       VertexOwners* owners) {
+                                                       VertexOwners* owners,
+                                                       std::optional<refine::QualityRange>& quality) {
   const World w = world();
   // M_o: the same on every rank.
   // Steps on ∂Ω in the phase where D's changes are exact (par/refinement_rules.hpp).
@@ -302,7 +303,14 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   if (distribute && coarse.stats.h_theorem > 0 && vm.missing_subfacets.empty() &&
       vm.missing_subsegments.empty() && assembled.encroached == 0)
     rest.resumed_h = refine::theorem_h(shortest_t0, opt);
-  return refine::refine(vm, rest);
+  const std::size_t before = vm.dt.num_points();
+  refine::RefineResult rr = refine::refine(vm, rest);
+  if (distribute && vm.dt.num_points() == before && rr.stats.flag_repairs == 0 &&
+      rr.stats.conformity_breaks == 0) {
+    quality.emplace();
+    for (const par::RankFigures& f : figures) quality->merge(f.quality);
+  }
+  return rr;
 }
 
 int checkpoint(int code) {

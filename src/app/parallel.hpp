@@ -51,6 +51,9 @@ class RunAbandoned : public std::runtime_error {
 // message of the parallel phase is held that long before it is delivered. `submeshes`
 // N >= P (0: P) parts of M_o, submesh k on rank k mod P (par/actor_mux.hpp). `owners`
 // (when given) gets, on rank 0, who made each vertex (app/partitioned_output.hpp).
+// `quality` gets, on rank 0, the quality figures of the final inside tets when the ranks
+// computed them on their submeshes (the completion then added no vertex and changed no
+// flag, so those are the mesh's tets: refine::QualityRange), else nothing.
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
@@ -58,7 +61,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::uint64_t latency_us,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,
-                                                       VertexOwners* owners);
+                                                       VertexOwners* owners,
+                                                       std::optional<refine::QualityRange>& quality);
 
 // The exit code of the run, on every rank (`code` without mpirun): the code the checkpoint
 // fixed; else, past the checkpoint, rank 0's; else (no checkpoint yet: a command without

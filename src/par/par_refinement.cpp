@@ -11,6 +11,18 @@
 
 namespace pdr::par {
 
+refine::QualityRange submesh_quality(const Submesh& s) {
+  refine::QualityRange q;
+  const TetStore& st = s.store();
+  const auto pts = s.points();
+  for (TetId t = 0; t < st.slots(); ++t) {
+    if (!st.is_alive(t) || st.is_proxy(t) || st.is_ghost(t) || !s.inside(t)) continue;
+    const VertexId* v = st.vertices(t);
+    q.add(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
+  }
+  return q;
+}
+
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
                        const refine::TetBounds& bounds, std::uint64_t seed, bool surface_steps) {
   using Clock = std::chrono::steady_clock;
@@ -61,6 +73,7 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   WireWriter pieces;
   for (const auto& a : actors) {
     put_piece(pieces, piece_of(a->submesh()));
+    f.quality.merge(submesh_quality(a->submesh()));
     f.steps += a->stats();
     f.final_tets += a->submesh().real_tets();
     out.points.insert(out.points.end(), a->committed_points().begin(),

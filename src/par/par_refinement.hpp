@@ -23,6 +23,7 @@
 #include "par/insertion_actor.hpp"
 #include "par/partition.hpp"
 #include "par/refinement_rules.hpp"
+#include "refine/quality.hpp"
 #include "par/transport.hpp"
 
 namespace pdr::par {
@@ -37,7 +38,11 @@ struct RankFigures {
   std::uint64_t empty_polls = 0, sleeps = 0;
   std::uint64_t start_tets = 0, final_tets = 0;  // real tets of the submesh
   std::uint64_t points = 0;                     // points committed (RankResult::points)
+  refine::QualityRange quality;  // of the submeshes' inside tets at the end
 };
+
+// The quality figures of submesh s's inside tets (real, not ghosts).
+refine::QualityRange submesh_quality(const Submesh& s);
 
 struct RankResult {
   std::vector<Point> points;  // the points this rank committed

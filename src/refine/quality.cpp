@@ -143,4 +143,28 @@ void dihedral_range(const Point& a, const Point& b, const Point& c, const Point&
   max_deg = std::max(max_deg, degrees(hi));
 }
 
+void QualityRange::add(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double r = ratio_of(a, b, c, d);
+  ratio_min = std::min(ratio_min, r);
+  ratio_max = std::max(ratio_max, r);
+  dihedral_range(a, b, c, d, dihedral_min, dihedral_max);
+  const Point* p[4] = {&a, &b, &c, &d};
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      double s = 0;
+      for (int k = 0; k < 3; ++k) s += ((*p[i])[k] - (*p[j])[k]) * ((*p[i])[k] - (*p[j])[k]);
+      shortest2 = std::min(shortest2, s);
+    }
+  ++tets;
+}
+
+void QualityRange::merge(const QualityRange& o) {
+  ratio_min = std::min(ratio_min, o.ratio_min);
+  ratio_max = std::max(ratio_max, o.ratio_max);
+  dihedral_min = std::min(dihedral_min, o.dihedral_min);
+  dihedral_max = std::max(dihedral_max, o.dihedral_max);
+  shortest2 = std::min(shortest2, o.shortest2);
+  tets += o.tets;
+}
+
 }  // namespace pdr::refine

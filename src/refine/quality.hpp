@@ -17,6 +17,8 @@
 // positive (orient3d > 0, as every live tet of the kernel).
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "domain/cells.hpp"
@@ -48,5 +50,18 @@ bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
 double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d);
 void dihedral_range(const Point& a, const Point& b, const Point& c, const Point& d,
                     double& min_deg, double& max_deg);
+
+// Display only: the extremes of ratio_of and dihedral_range and the shortest edge over a
+// set of tets. Each tet's figures depend on its points alone, and min and max on no
+// order, so the figures of a mesh are those of any split of its tets, merged (the
+// parallel run's ranks each take their own, par/par_refinement.hpp).
+struct QualityRange {
+  double ratio_min = std::numeric_limits<double>::infinity(), ratio_max = 0;
+  double dihedral_min = 180, dihedral_max = 0;
+  double shortest2 = std::numeric_limits<double>::infinity();  // the shortest edge, squared
+  std::uint64_t tets = 0;
+  void add(const Point& a, const Point& b, const Point& c, const Point& d);
+  void merge(const QualityRange& o);
+};
 
 }  // namespace pdr::refine

@@ -169,6 +169,7 @@ struct SimRun {
   // with the holder's label (kNoLabel for none).
   std::vector<std::pair<std::vector<Point>, std::uint32_t>> labels;
   InsertionStats stats;
+  refine::QualityRange quality;  // the ranks' submesh_quality, merged
 };
 
 SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed, bool surface = false) {
@@ -212,6 +213,7 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed, bool
       if (s.tag(v) != want) break;
     }
     out.points.insert(out.points.end(), a->committed_points().begin(), a->committed_points().end());
+    out.quality.merge(submesh_quality(s));
     {
       const TetStore& st = s.store();
       const auto pts = s.points();
@@ -325,6 +327,21 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
     }
     EXPECT_TRUE(g.dt.check_topology().empty());
     EXPECT_TRUE(refine::audit_volume(g).empty());
+    // The ranks' quality figures are those of the assembled mesh's inside tets, exactly
+    // (what `pdr mesh` reports when the completion changes nothing).
+    {
+      const MeshData exported = to_mesh_data(g.dt, g.inside);
+      refine::QualityRange whole;
+      for (const auto& t : exported.tets)
+        whole.add(exported.points[t[0]], exported.points[t[1]], exported.points[t[2]],
+                  exported.points[t[3]]);
+      EXPECT_EQ(run.quality.tets, whole.tets) << "seed " << seed;
+      EXPECT_EQ(run.quality.ratio_min, whole.ratio_min) << "seed " << seed;
+      EXPECT_EQ(run.quality.ratio_max, whole.ratio_max) << "seed " << seed;
+      EXPECT_EQ(run.quality.dihedral_min, whole.dihedral_min) << "seed " << seed;
+      EXPECT_EQ(run.quality.dihedral_max, whole.dihedral_max) << "seed " << seed;
+      EXPECT_EQ(run.quality.shortest2, whole.shortest2) << "seed " << seed;
+    }
     // No element of D is encroached after the phase (each point went in only where it
     // encroached no element of its closure): what lets the completion skip its scan
     // (refine::RefineOptions::resumed_h).
