@@ -96,8 +96,8 @@ MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc, std::size_t 
 void quality_summary(const refine::QualityRange& q, Summary& summary) {
   summary.set("ratio_min", q.tets == 0 ? 0.0 : q.ratio_min);
   summary.set("ratio_max", q.ratio_max);
-  summary.set("dihedral_min_deg", q.dihedral_min);
-  summary.set("dihedral_max_deg", q.dihedral_max);
+  summary.set("dihedral_min_deg", q.dihedral_min_deg());
+  summary.set("dihedral_max_deg", q.dihedral_max_deg());
   summary.set("shortest_edge", std::isfinite(q.shortest2) ? std::sqrt(q.shortest2) : 0.0);
 }
 

@@ -107,11 +107,13 @@ double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d) 
   return std::sqrt(construct::circumradius2(a, b, c, d) / l2);
 }
 
-void dihedral_range(const Point& a, const Point& b, const Point& c, const Point& d,
-                    double& min_deg, double& max_deg) {
-  const Point* p[4] = {&a, &b, &c, &d};
-  // Outward normals of the faces opposite each vertex; the dihedral angle at the edge
-  // shared by faces i and j is pi minus the angle between their outward normals.
+namespace {
+
+// The extreme dot products of a tet's unit outward face normals. Faces listed by
+// mesh/tables.hpp are all oriented outward, so the interior dihedral angle at the edge of
+// faces i and j is pi - acos(n_i . n_j), increasing with the dot product: the smallest and
+// largest angles are at the smallest and largest dot products.
+void dihedral_dots(const Point* const p[4], double& lo, double& hi) {
   double n[4][3];
   for (int f = 0; f < 4; ++f) {
     const Point& x = *p[tables::kFaceVertex[f][0]];
@@ -126,43 +128,44 @@ void dihedral_range(const Point& a, const Point& b, const Point& c, const Point&
     const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
     for (int k = 0; k < 3; ++k) r[k] = len > 0 ? r[k] / len : 0;
   }
-  // Faces listed by mesh/tables.hpp are all oriented outward, so the interior dihedral
-  // angle is pi - angle(n_i, n_j) = pi - acos(n_i . n_j), increasing with the dot
-  // product: the extreme angles are at the extreme dot products (two acos, not six).
-  double lo = 1, hi = -1;
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
       const double dot = n[i][0] * n[j][0] + n[i][1] * n[j][1] + n[i][2] * n[j][2];
       lo = std::min(lo, dot);
       hi = std::max(hi, dot);
     }
-  auto degrees = [](double dot) {
-    return 180.0 - std::acos(std::clamp(dot, -1.0, 1.0)) * 180.0 / std::numbers::pi;
-  };
-  min_deg = std::min(min_deg, degrees(lo));
-  max_deg = std::max(max_deg, degrees(hi));
 }
 
+double dihedral_degrees(double dot) {
+  return 180.0 - std::acos(std::clamp(dot, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+}  // namespace
+
+double QualityRange::dihedral_min_deg() const { return tets == 0 ? 180.0 : dihedral_degrees(dot_lo); }
+double QualityRange::dihedral_max_deg() const { return tets == 0 ? 0.0 : dihedral_degrees(dot_hi); }
+
 void QualityRange::add(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const double r = ratio_of(a, b, c, d);
+  const Point* p[4] = {&a, &b, &c, &d};
+  double l2 = std::numeric_limits<double>::infinity();
+  for (const auto& [i, j] : tables::kEdgeVertex) {
+    const Point e = filter::sub(*p[i], *p[j]);
+    l2 = std::min(l2, filter::dot(e, e));
+  }
+  const double r = l2 > 0 ? std::sqrt(construct::circumradius2(a, b, c, d) / l2)
+                          : std::numeric_limits<double>::infinity();  // ratio_of
   ratio_min = std::min(ratio_min, r);
   ratio_max = std::max(ratio_max, r);
-  dihedral_range(a, b, c, d, dihedral_min, dihedral_max);
-  const Point* p[4] = {&a, &b, &c, &d};
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      double s = 0;
-      for (int k = 0; k < 3; ++k) s += ((*p[i])[k] - (*p[j])[k]) * ((*p[i])[k] - (*p[j])[k]);
-      shortest2 = std::min(shortest2, s);
-    }
+  shortest2 = std::min(shortest2, l2);
+  dihedral_dots(p, dot_lo, dot_hi);
   ++tets;
 }
 
 void QualityRange::merge(const QualityRange& o) {
   ratio_min = std::min(ratio_min, o.ratio_min);
   ratio_max = std::max(ratio_max, o.ratio_max);
-  dihedral_min = std::min(dihedral_min, o.dihedral_min);
-  dihedral_max = std::max(dihedral_max, o.dihedral_max);
+  dot_lo = std::min(dot_lo, o.dot_lo);
+  dot_hi = std::max(dot_hi, o.dot_hi);
   shortest2 = std::min(shortest2, o.shortest2);
   tets += o.tets;
 }

@@ -46,22 +46,25 @@ bool volume_above(const Point& a, const Point& b, const Point& c, const Point& d
 bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
             const TetBounds& bounds);
 
-// Display only (summaries): the radius-edge ratio and the dihedral angles in degrees.
+// Display only (summaries): the radius-edge ratio (R / shortest edge).
 double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d);
-void dihedral_range(const Point& a, const Point& b, const Point& c, const Point& d,
-                    double& min_deg, double& max_deg);
 
-// Display only: the extremes of ratio_of and dihedral_range and the shortest edge over a
-// set of tets. Each tet's figures depend on its points alone, and min and max on no
-// order, so the figures of a mesh are those of any split of its tets, merged (the
-// parallel run's ranks each take their own, par/par_refinement.hpp).
+// Display only: the extremes of ratio_of, of the dihedral angles and of the edge lengths
+// over a set of tets. Each tet's figures depend on its points alone, and min and max on
+// no order, so the figures of a mesh are those of any split of its tets, merged (the
+// parallel run's ranks each take their own, par/par_refinement.hpp). The dihedral angles
+// are kept as the extreme dot products of unit outward face normals (the angle at an edge
+// is pi - acos(dot), increasing with it) and turned into degrees once.
 struct QualityRange {
   double ratio_min = std::numeric_limits<double>::infinity(), ratio_max = 0;
-  double dihedral_min = 180, dihedral_max = 0;
+  double dot_lo = std::numeric_limits<double>::infinity();
+  double dot_hi = -std::numeric_limits<double>::infinity();
   double shortest2 = std::numeric_limits<double>::infinity();  // the shortest edge, squared
   std::uint64_t tets = 0;
   void add(const Point& a, const Point& b, const Point& c, const Point& d);
   void merge(const QualityRange& o);
+  double dihedral_min_deg() const;  // 180 for no tets
+  double dihedral_max_deg() const;  // 0 for no tets
 };
 
 }  // namespace pdr::refine

@@ -338,8 +338,8 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
       EXPECT_EQ(run.quality.tets, whole.tets) << "seed " << seed;
       EXPECT_EQ(run.quality.ratio_min, whole.ratio_min) << "seed " << seed;
       EXPECT_EQ(run.quality.ratio_max, whole.ratio_max) << "seed " << seed;
-      EXPECT_EQ(run.quality.dihedral_min, whole.dihedral_min) << "seed " << seed;
-      EXPECT_EQ(run.quality.dihedral_max, whole.dihedral_max) << "seed " << seed;
+      EXPECT_EQ(run.quality.dot_lo, whole.dot_lo) << "seed " << seed;
+      EXPECT_EQ(run.quality.dot_hi, whole.dot_hi) << "seed " << seed;
       EXPECT_EQ(run.quality.shortest2, whole.shortest2) << "seed " << seed;
     }
     // No element of D is encroached after the phase (each point went in only where it
