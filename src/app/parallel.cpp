@@ -303,10 +303,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   if (distribute && coarse.stats.h_theorem > 0 && vm.missing_subfacets.empty() &&
       vm.missing_subsegments.empty() && assembled.encroached == 0)
     rest.resumed_h = refine::theorem_h(shortest_t0, opt);
-  const std::size_t before = vm.dt.num_points();
   refine::RefineResult rr = refine::refine(vm, rest);
-  if (distribute && vm.dt.num_points() == before && rr.stats.flag_repairs == 0 &&
-      rr.stats.conformity_breaks == 0) {
+  if (distribute && rr.tets_unchanged) {
     quality.emplace();
     for (const par::RankFigures& f : figures) quality->merge(f.quality);
   }

@@ -32,6 +32,16 @@ std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
   return static_cast<std::size_t>(h ^ (h >> 31));
 }
 
+namespace {
+
+void sort3(VertexId& a, VertexId& b, VertexId& c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+}
+
+}  // namespace
+
 Submesh::VertexLabels& Submesh::list_for(VertexId v) {
   if (label_list_.size() <= v) label_list_.resize(points_.size(), kNoList);
   if (label_list_[v] == kNoList) {
@@ -50,9 +60,7 @@ std::uint32_t Submesh::edge_label(VertexId a, VertexId b) const {
 }
 
 std::uint32_t Submesh::face_label(VertexId a, VertexId b, VertexId c) const {
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
+  sort3(a, b, c);
   if (const VertexLabels* l = list_at(a))
     for (const FaceEntry& f : l->faces)
       if (f.b == b && f.c == c) return f.label;
@@ -74,9 +82,7 @@ void Submesh::set_edge_label(VertexId a, VertexId b, std::uint32_t label) {
 }
 
 void Submesh::set_face_label(VertexId a, VertexId b, VertexId c, std::uint32_t label) {
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
+  sort3(a, b, c);
   if (label == kNoLabel || c >= points_.size() || a == b || b == c)
     throw std::logic_error("submesh: a label on a face that cannot have one");
   std::vector<FaceEntry>& faces = list_for(a).faces;
@@ -103,9 +109,7 @@ void Submesh::erase_edge_label(VertexId a, VertexId b) {
 }
 
 void Submesh::erase_face_label(VertexId a, VertexId b, VertexId c) {
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
+  sort3(a, b, c);
   if (a >= label_list_.size() || label_list_[a] == kNoList) return;
   std::vector<FaceEntry>& faces = lists_[label_list_[a]].faces;
   for (FaceEntry& f : faces)

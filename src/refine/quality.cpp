@@ -96,15 +96,28 @@ bool is_bad(const Point& a, const Point& b, const Point& c, const Point& d,
   return ratio_test(m, a, b, c, d, bounds.ratio);
 }
 
-double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const Point* p[4] = {&a, &b, &c, &d};
+namespace {
+
+double shortest_edge2(const Point* const p[4]) {
   double l2 = std::numeric_limits<double>::infinity();
   for (const auto& [i, j] : tables::kEdgeVertex) {
     const Point e = filter::sub(*p[i], *p[j]);
     l2 = std::min(l2, filter::dot(e, e));
   }
+  return l2;
+}
+
+// ratio_of, given the tet's shortest edge squared.
+double ratio_with(const Point* const p[4], double l2) {
   if (l2 <= 0) return std::numeric_limits<double>::infinity();
-  return std::sqrt(construct::circumradius2(a, b, c, d) / l2);
+  return std::sqrt(construct::circumradius2(*p[0], *p[1], *p[2], *p[3]) / l2);
+}
+
+}  // namespace
+
+double ratio_of(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Point* p[4] = {&a, &b, &c, &d};
+  return ratio_with(p, shortest_edge2(p));
 }
 
 namespace {
@@ -147,13 +160,8 @@ double QualityRange::dihedral_max_deg() const { return tets == 0 ? 0.0 : dihedra
 
 void QualityRange::add(const Point& a, const Point& b, const Point& c, const Point& d) {
   const Point* p[4] = {&a, &b, &c, &d};
-  double l2 = std::numeric_limits<double>::infinity();
-  for (const auto& [i, j] : tables::kEdgeVertex) {
-    const Point e = filter::sub(*p[i], *p[j]);
-    l2 = std::min(l2, filter::dot(e, e));
-  }
-  const double r = l2 > 0 ? std::sqrt(construct::circumradius2(a, b, c, d) / l2)
-                          : std::numeric_limits<double>::infinity();  // ratio_of
+  const double l2 = shortest_edge2(p);
+  const double r = ratio_with(p, l2);
   ratio_min = std::min(ratio_min, r);
   ratio_max = std::max(ratio_max, r);
   shortest2 = std::min(shortest2, l2);

@@ -112,10 +112,10 @@ class Refiner {
     // From given start tets, with no vertex added and no flag changed since, the tets are
     // those of the start, and only the start tets may miss the bounds
     // (RefineOptions::start_tets).
-    const bool unchanged = o_.start_tets && m_.dt.num_points() == points_at_start &&
-                           res_.stats.flag_repairs == 0 && res_.stats.conformity_breaks == 0;
+    res_.tets_unchanged = o_.start_tets && m_.dt.num_points() == points_at_start &&
+                          res_.stats.flag_repairs == 0 && res_.stats.conformity_breaks == 0;
     res_.leftovers = collect_leftovers(m_, o_.ratio, refused_, res_.stop_reason,
-                                       unchanged ? &*o_.start_tets : nullptr);
+                                       res_.tets_unchanged ? &*o_.start_tets : nullptr);
     return std::move(res_);
   }
 

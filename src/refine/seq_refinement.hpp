@@ -183,6 +183,9 @@ struct RefineResult {
   std::vector<Leftover> leftovers;  // inside tets with ratio >= B at the end
   std::vector<std::string> unsplit;  // why encroached elements were not refined (first 50)
   std::string stop_reason;          // empty unless the vertex cap stopped the loop
+  // The run had start tets and added no vertex and changed no inside flag: its tets are
+  // those it started from (and only the start tets were tested for leftovers).
+  bool tets_unchanged = false;
 };
 
 RefineResult refine(VolumeMesh& m, const RefineOptions& options);

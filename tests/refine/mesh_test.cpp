@@ -66,6 +66,7 @@ TEST(RefineMesh, StartTetsStoppedAtOnceListTheLeftoversOfAFullScan) {
   o.max_vertices = vm.dt.num_points();
   const RefineResult rr = refine(vm, o);
   ASSERT_EQ(vm.dt.num_points(), o.max_vertices);
+  EXPECT_TRUE(rr.tets_unchanged);
   ASSERT_EQ(rr.leftovers.size(), all.size());
   for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(rr.leftovers[i].v, all[i].v);
 }
