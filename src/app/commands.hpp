@@ -58,7 +58,7 @@ struct MeshArgs {
   std::size_t submeshes = 0;          // mpirun: submeshes of M_o, >= ranks (0: one per rank)
   surface::SurfaceSizing surface_sizing = surface::SurfaceSizing::Auto;  // surface/init.hpp
   // --planarity-tolerance: the domain analysis's (domain::PlcOptions), and twice it the
-  // check's (check::Options::relative_tolerance, when larger); absent: their defaults.
+  // check's (check::Options::relative_tolerance); absent: the analysis's default.
   std::optional<double> planarity_tolerance;
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);
@@ -68,11 +68,13 @@ inline domain::PlcOptions plc_options(const std::optional<double>& planarity) {
   if (planarity) o.planarity_tolerance = *planarity;
   return o;
 }
-// The check's relative tolerance under --planarity-tolerance T: vertices within 2T facet
-// diameters of a facet's plane count as on it (the input's facets deviate up to T, the
-// vertices the mesher puts on them by rounding); `fallback` without the option.
-inline double check_tolerance(const std::optional<double>& planarity, double fallback) {
-  return planarity ? std::max(fallback, 2 * *planarity) : fallback;
+// The check's relative tolerance under --planarity-tolerance T (absent: the domain
+// analysis's default T): vertices within 2T facet diameters of a facet's plane count as on
+// it. The input's facets deviate up to T from their least-squares planes, and the mesher
+// rounds a facet's new vertices onto the plane of three of its vertices; a tighter check
+// would refuse facets the mesher accepted.
+inline double check_tolerance(const std::optional<double>& planarity) {
+  return 2 * plc_options(planarity).planarity_tolerance;
 }
 int run_mesh(const MeshArgs& args);
 // The mesher on a PLC (shared with the default job and the Python module); fills

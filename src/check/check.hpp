@@ -87,8 +87,10 @@ struct Options {
   unsigned threads = 2;               // worker threads for the per-tet loops (>= 1)
   // Input classification only (conformity, encroachment): a mesh vertex within
   // relative_tolerance * (facet diameter) of a facet's plane, or within
-  // relative_tolerance * |AB| of a segment AB's line, counts as lying on it.
-  double relative_tolerance = 1e-10;
+  // relative_tolerance * |AB| of a segment AB's line, counts as lying on it. The default
+  // is twice the domain analysis's default planarity tolerance (1e-9, like TetGen's -T):
+  // the facets pdr mesh accepts deviate that much from their planes.
+  double relative_tolerance = 2e-9;
   // Pieces of the domain that bound no region (a facet, or a part of one, with voids or the
   // outside on both sides, and the segments only such pieces hold): TetGen drops them, and
   // so does pdr's domain analysis (domain::PlcDomain::dropped). The mesh need not hold

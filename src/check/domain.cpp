@@ -265,7 +265,8 @@ void mark_dropped(DomainMap& m, const std::vector<Point>& input, const MeshView&
   }
 }
 
-// Mesh faces in each facet: all three vertices on the facet's plane, centroid in its region.
+// Mesh faces in each facet: all three vertices on the facet's plane and in its closed
+// region, the centroid inside it.
 void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
   std::vector<std::uint32_t> start(mesh.points.size() + 1, 0), list;
   for (const FacetMap& f : m.facets)
@@ -294,6 +295,13 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
       const Where w = f.region->locate(q);
       if (w == Where::Boundary) ++f.ambiguous_faces;
       if (w != Where::Inside) continue;
+      // A face with a corner outside the region is not in the facet, whatever its centroid:
+      // the faces of a sliver across a segment between two facets a hair from coplanar have
+      // their corners within tolerance of both planes, and would stack on the subfacets.
+      if (std::any_of(t.begin(), t.end(), [&](std::uint32_t v) {
+            return f.region->locate(Q2::at(project(mesh.points[v], d))) == Where::Outside;
+          }))
+        continue;
       if (std::any_of(f.dropped.begin(), f.dropped.end(), [&](const std::vector<P2>& tri) {
             return locate_in_polygon(tri, q) != Where::Outside;
           }))

@@ -15,9 +15,12 @@
 // the mesh). Everything after the classification is exact: the order of vertices along a
 // segment, whether they lie between its ends, face centroids in the facet region, areas.
 // How many vertices needed the tolerance is reported ("tolerance_vertices").
-// A mesh face lies in facet F if its three vertices are on F's plane and its centroid lies
-// in F's region (facet_region.hpp); in a conforming mesh no face straddles a segment, so
-// the centroid decides for the whole face. F's region is built from its polygons with the
+// A mesh face lies in facet F if its three vertices are on F's plane and in F's closed
+// region, and its centroid lies inside the region (facet_region.hpp). In a conforming mesh
+// no face straddles a segment, so the centroid decides for a face in the facet; the corners
+// keep out the faces of a sliver across a segment between two facets a hair from coplanar
+// (each corner within tolerance of both planes), which would otherwise stack on F's
+// subfacets and count twice. F's region is built from its polygons with the
 // mesh vertices found on each edge inserted in order: when the tolerance was needed, the
 // mesh faces tile that polygon exactly (and not the input one), so areas still compare
 // exactly; with exact vertices the two polygons coincide.

@@ -1,24 +1,27 @@
 // Step 4a of build_domain: every face's plane, and faces that share an edge and are coplanar
-// within the planarity tolerance given one plane (domain/plane.hpp).
+// within the planarity tolerance marked as one group (plane_group).
 //
 // Why. Two faces across an edge whose dihedral angle is 180 degrees to within rounding (the
 // two triangles of a planar quad in a rotated STL or OFF file, a face split in two in a
-// .poly) are, as the kernel would see them with a plane each, two planes a few ulps apart.
-// New vertices on either face are rounded onto its own plane, and near the common edge the
-// 3D Delaunay tetrahedralization then decides flat tets spanning both faces by those ulps:
-// subfacets of one face end a hair inside the equatorial spheres of the other's, and the
-// flat-tet repair of refine/flat.hpp, which needs the four vertices on one plane, cannot see
-// them (a rotated triangulated torus ended non-conforming). The input means one plane there,
-// so the tolerance classifies it as one: this is input classification, like a facet planar
-// within tolerance, and every later decision stays exact.
+// .poly) are, as the kernel sees them with a plane each, two planes a few ulps apart. Near
+// the common edge the 3D Delaunay tetrahedralization then decides flat tets spanning both
+// faces by those ulps, which the flat-tet repair of refine/flat.hpp must see as flat: its
+// rule 1 takes four vertices of one group as lying on one plane. The input means one plane
+// there, so the tolerance classifies it as one: this is input classification, like a facet
+// planar within tolerance, and every later decision stays exact.
+//
+// Each face keeps its own plane (defining triple and chart): the new vertices of a face are
+// rounded onto it, so they lie within rounding of the face's own plane, as an independent
+// check of that face expects (check/domain.hpp). A plane shared by the group put them on
+// the group's defining triple, up to the group's deviation times its diameter off a member
+// face, beyond the check's tolerance relative to the face's diameter (a 10-degree wedge
+// written with 9 digits: tests/regress/outside-wedge-printed-9-digits-facets-off-check.off).
 //
 // Rule. Faces are grouped greedily in index order: a group starts at its smallest face and
 // grows across polygon edges shared with faces not yet grouped, taking a neighbour when the
 // fitted plane of the group's vertices together with the neighbour's is within the planarity
-// tolerance (relative to the union's diameter). Every face of a group gets the group's
-// plane (defining triple, chart, exactness) and `plane_group`, the group's smallest face;
-// the segment between two faces of a group stays a segment. A face alone keeps its own
-// plane, as before.
+// tolerance (relative to the union's diameter). Every face of a group gets `plane_group`, the
+// group's smallest face; the segment between two faces of a group stays a segment.
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -104,7 +107,6 @@ void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
     if (polys[seed].loops.empty() || grouped[seed]) continue;
     grouped[seed] = true;
     std::vector<std::uint32_t> members{seed}, group_verts = verts[seed];
-    std::optional<PlaneFit> group_fit;
     for (std::size_t i = 0; i < members.size(); ++i)
       for (std::uint32_t g : neighbours[members[i]]) {
         if (grouped[g]) continue;
@@ -114,13 +116,8 @@ void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
         grouped[g] = true;
         members.push_back(g);
         group_verts = std::move(u);
-        group_fit = std::move(fit);
       }
-    if (!group_fit) continue;
-    for (std::uint32_t f : members) {
-      dom.facets[f].plane = group_fit->plane;
-      dom.facets[f].plane_group = seed;
-    }
+    for (std::uint32_t f : members) dom.facets[f].plane_group = seed;
   }
   for (std::uint32_t f = 0; f < n; ++f)
     if (dom.facets[f].is_face && !dom.facets[f].plane.exact) dom.tolerance_facets.push_back(f);

@@ -61,11 +61,10 @@ struct FacetTri {
 
 struct DomainFacet {
   bool is_face = false;                 // has a polygon of >= 3 vertices
-  FacetPlane plane;                     // valid when is_face; shared by a coplanar group
+  FacetPlane plane;                     // valid when is_face; the face's own
   std::uint32_t plane_group = 0;        // smallest face of its coplanar group (itself when
                                         // alone): faces across an edge coplanar within the
-                                        // planarity tolerance share one plane
-                                        // (domain/coplanar.cpp)
+                                        // planarity tolerance (domain/coplanar.cpp)
   std::vector<std::uint32_t> vertices;  // sorted ids: corners of tris, and 1-vertex polygons
   std::vector<FacetTri> tris;           // the facet's region (empty unless is_face)
   std::vector<std::uint32_t> segments;  // sorted ids of the segments the facet contains

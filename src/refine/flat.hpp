@@ -2,7 +2,7 @@
 //
 // 1. Flat tets on a facet: a tet whose four vertices all lie on one facet of D, or on
 //    facets of one coplanar group (domain/coplanar.cpp: facets across a segment coplanar
-//    within the planarity tolerance share one plane). On an exactly
+//    within the planarity tolerance form one group). On an exactly
 //    planar facet with exactly coplanar vertices such a tet cannot exist (its orientation
 //    would be zero). On a tilted facet rounding puts constructed vertices a few ulps off the
 //    plane, and a near-cocircular quadruple a, b, c, d of the facet may then be a Delaunay

@@ -85,7 +85,7 @@ struct SurfaceFacet {
   bool is_face = false;                 // facets without area have no subfacets
   FacetChart chart;                     // valid when is_face
   std::uint32_t plane_group = 0;        // domain::DomainFacet::plane_group: facets of one
-                                        // group share the chart's plane
+                                        // group are one plane to refine/flat.hpp's rule 1
   std::vector<std::uint32_t> segments;  // segments contained in the facet, sorted
   std::vector<BoundarySide> boundary;   // the region's boundary, as segments
   std::size_t line = 0;                 // source line of the facet, for diagnostics

@@ -154,6 +154,39 @@ TEST(Conformity, ToleranceClassifiesRoundedVertices) {
   EXPECT_NE(result(e, "conformity.facets").status, Status::Pass);
 }
 
+// A pyramid over a base of two triangle facets, ABC and ACD, D raised 1e-10 above ABC's
+// plane (a quad's triangles a hair from coplanar, folded up along AC), meshed with the
+// sliver ABCD inside and two tets on it to the apex E. The sliver's upper faces ABD and BCD
+// have every corner within tolerance of ABC's plane and their centroids inside ABC, but D
+// lies outside ABC: they are not in the facet, and the facet is covered once (they were
+// counted, and the facet covered more than once). Without the sliver nothing covers the
+// base (nor segment AC), and ABD and BCD do not pass for it.
+TEST(Conformity, SliverAcrossANearlyFlatFoldIsNotInTheFacet) {
+  const auto pyramid = [] {
+    Plc d;
+    d.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.2, 1, 1e-10}, {0.5, 0.5, 1}};
+    for (const std::vector<std::uint32_t>& f :
+         std::vector<std::vector<std::uint32_t>>{{0, 1, 2}, {0, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}) {
+      PlcFacet g;
+      g.polygons.push_back(f);
+      d.facets.push_back(g);
+    }
+    MeshData m;
+    m.points = d.points;
+    m.tets = {{0, 1, 2, 3}, {0, 1, 3, 4}, {1, 2, 3, 4}};
+    return std::pair{m, d};
+  };
+  const auto [m, d] = pyramid();
+  const Report r = run(m, d);
+  for (const char* id : {"conformity.vertices", "conformity.segments", "conformity.facets", "conformity.volume"})
+    EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
+  EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
+  MeshData open = m;
+  open.tets.erase(open.tets.begin());
+  const Ids without = failed(run(open, d));
+  EXPECT_TRUE(without.contains("conformity.facets") && without.contains("conformity.volume"));
+}
+
 TEST(FacetRegion, NestedPolygonWithHoleIsARing) {
   const std::vector<P2> outer = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
   const std::vector<P2> inner = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};

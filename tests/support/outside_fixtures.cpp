@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <random>
 #include <utility>
@@ -28,6 +30,21 @@ std::vector<P2d> tee_profile(double w, double yj, double f, double top, double y
   return {{-w, 0}, {w, 0}, {w, yj}, {f, yt}, {f, top}, {-f, top}, {-f, yt}, {-w, yj}};
 }
 
+namespace {
+
+// f on every point the domain holds: vertices, volume and facet holes, region points.
+template <class F>
+Plc each_point(Plc plc, F f) {
+  for (Point& p : plc.points) f(p);
+  for (Point& p : plc.holes) f(p);
+  for (PlcFacet& g : plc.facets)
+    for (Point& p : g.holes) f(p);
+  for (PlcRegion& r : plc.regions) f(r.point);
+  return plc;
+}
+
+}  // namespace
+
 Plc rotated(Plc plc, double a, double b, double c) {
   const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
                cc = std::cos(c), sc = std::sin(c);
@@ -37,13 +54,17 @@ Plc rotated(Plc plc, double a, double b, double c) {
     const double y3 = cc * y1 - sc * z2, z3 = sc * y1 + cc * z2;
     p = {x2, y3, z3};
   };
-  for (Point& p : plc.points) turn(p);
-  // Every point the domain holds turns with it: volume and facet holes, region points.
-  for (Point& p : plc.holes) turn(p);
-  for (PlcFacet& f : plc.facets)
-    for (Point& p : f.holes) turn(p);
-  for (PlcRegion& r : plc.regions) turn(r.point);
-  return plc;
+  return each_point(std::move(plc), turn);
+}
+
+Plc printed(Plc plc, int digits) {
+  return each_point(std::move(plc), [digits](Point& p) {
+    for (double& x : p) {
+      char buf[40];
+      std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+      x = std::strtod(buf, nullptr);
+    }
+  });
 }
 
 namespace {
@@ -304,7 +325,8 @@ rc::Gen<Plc> gen_rotated_torus_of_triangles() {
     const double r = 0.45 + *rc::gen::inRange(0, 106) / 100.0;
     const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
     const double a = angle(), b = angle(), c = angle();
-    return rotated(torus_of_triangles(n, m, r), a, b, c);
+    const int digits = *rc::gen::elementOf(std::vector<int>{17, 9, 7});
+    return printed(rotated(torus_of_triangles(n, m, r), a, b, c), digits);
   });
 }
 

@@ -37,6 +37,9 @@ std::vector<P2d> tee_profile(double w, double yj, double f, double top, double y
 
 // p turned by the rotation with Euler angles (a, b, c) (radians), rounded to doubles.
 Plc rotated(Plc plc, double a, double b, double c);
+// p's points as a text file written with printf's %.<digits>g gives them back (an STL or
+// OFF writer of another tool: 9 digits for a float, fewer by hand).
+Plc printed(Plc plc, int digits);
 
 // The prism over a star-shaped profile (about the origin) cut by walls from the axis to the
 // corners `walls` (sorted, at least two): caps split into sectors, Enclosure::HolePoints.
@@ -78,7 +81,10 @@ rc::Gen<Plc> gen_spiky();
 // across each diagonal are coplanar (exactly before a rotation, within rounding after),
 // corners of the triangles 7 to 80 degrees, every input vertex acute.
 Plc torus_of_triangles(int n, int m, double r);
-// Such tori, n in [6, 16], m in [4, 8], r in [0.45, 1.5], turned by a random rotation.
+// Such tori, n in [6, 16], m in [4, 8], r in [0.45, 1.5], turned by a random rotation and
+// printed with 17, 9 or 7 significant digits: the triangles of a quad are then coplanar to
+// within rounding, within the planarity tolerance (one plane group) or beyond it (two
+// facets at a dihedral a hair from 180 degrees).
 rc::Gen<Plc> gen_rotated_torus_of_triangles();
 
 // A pyramid over the regular n-gon of circumradius 1, apex at `height` above its centre:
