@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "check/signs.hpp"
+#include "geom/plane_fit.hpp"
 
 namespace pdr::check {
 namespace {
@@ -147,13 +148,12 @@ FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const Dom
   fm.drop = drop;
   const Box fbox = bounding_box(pts);
   const double diam = norm(sub(fbox.hi, fbox.lo));
-  const double dist = tol > 0 ? tol * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0,
-               nn = norm(n);
+  const double dist = tol > 0 ? tol * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0;
+  const geom::FittedPlane lsq = geom::fit_plane(pts);
   auto on_plane = [&](const Point& p, bool& tolerance) {
     tolerance = false;
     if (signs::orient3d(a, b, c, p) == Sign::Zero) return true;
-    const Vec w = sub(p, a);
-    tolerance = std::fabs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) <= dist * nn;
+    tolerance = std::fabs(geom::signed_distance(lsq, p)) <= dist;
     return tolerance;
   };
   for (const Point& v : pts) {

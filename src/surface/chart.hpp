@@ -52,13 +52,19 @@
 //   chart images (circles map to ellipses); the 3D equatorial-ball test alone (exact
 //   witness for T, but not a lifting, so flips and cavities could cycle off the plane).
 // Placement. place_on_facet keeps the chart coordinates of p and recomputes the dropped
-// coordinate k from the plane through t0, t1, t2 (the facet's plane as the domain analysis
-// defines it): p_k = t0_k - (n_i (p_i - t0_i) + n_j (p_j - t0_j)) / n_k, n = (t1-t0)x(t2-t0)
-// in double, |n_k| >= |n| / sqrt(3). The chart position, which the triangulation decisions
-// see, is exactly the constructed one; the point is within a few ulps (relative to |p - t0|
-// and |p|) of the plane, and exactly on it when the facet is axis-parallel (n_i = n_j = 0
-// exactly, so p_k = t0_k). Exact coplanarity of constructed points is not guaranteed by
-// rounding otherwise; no decision depends on it (see above).
+// coordinate k from the facet's placement plane: p_k = o_k - (n_i (p_i - o_i) + n_j (p_j -
+// o_j)) / n_k. On an exactly planar facet that is the plane through t0, t1, t2 (o = t0,
+// n = (t1-t0)x(t2-t0) in double, |n_k| >= |n| / sqrt(3)): the point is within a few ulps
+// (relative to |p - t0| and |p|) of the plane, and exactly on it when the facet is
+// axis-parallel (n_i = n_j = 0 exactly, so p_k = t0_k). On a facet planar only within
+// tolerance it is the least-squares plane (o its centroid, n its unit normal:
+// geom/plane_fit.hpp), whose slab of half-width T times the diameter holds every vertex of
+// the facet: the plane through t0, t1, t2 passes through three of them and may lie several
+// times that far off the others (the fourth corner of a quad: three times), so new
+// vertices placed there could leave the slab that an independent check of the facet
+// accepts (check/domain.hpp). The chart position, which the triangulation decisions see,
+// is exactly the constructed one either way. Exact coplanarity of constructed points is
+// not guaranteed by rounding otherwise; no decision depends on it (see above).
 #pragma once
 
 #include "domain/exact.hpp"
@@ -71,7 +77,9 @@ struct FacetChart {
   domain::Projection projection;  // t0 t1 t2 counter-clockwise
   Point origin{};         // t0: a point of the plane and the lift's origin
   Point t1{}, t2{};       // the rest of the defining triple: the plane of the in-circle test
-  Point normal{};         // (t1 - t0) x (t2 - t0), in double: placement only
+  Point place_origin{};   // placement only (above): t0, or the least-squares centroid
+  Point place_normal{};   // (t1 - t0) x (t2 - t0) in double, or the least-squares normal
+                          // on its side
   domain::P2 operator()(const Point& p) const { return projection(p); }
 };
 

@@ -9,6 +9,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -33,6 +34,7 @@ FacetChart chart_of(const Point& o, const Point& p1, const Point& p2) {
   pl.projection.drop = nondegenerate_drop(o, p1, p2);
   pl.projection.swap = orient2d_dropping(pl.projection.drop, o, p1, p2) == Sign::Negative;
   pl.triple = {0, 1, 2};
+  pl.exact = true;  // three points
   return make_chart(pl, {o, p1, p2});
 }
 
@@ -115,6 +117,28 @@ TEST(SurfaceChart, PlacementIsExactOnAxisParallelFacets) {
   const double dist = ((q[0] - 0.1) * n[0] + (q[1] - 0.2) * n[1] + (q[2] - 0.3) * n[2]) /
                       std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   EXPECT_LT(std::fabs(dist), 1e-14);
+}
+
+// A quad planar only within tolerance, its corners alternately d above and below the
+// plane z = 0 (d = 4e-10 of a unit square): the plane through three corners lies 4d off the
+// fourth, and a point placed there would be 3d off the least-squares plane, beyond the
+// facet's own deviation. New vertices go on the least-squares plane instead, so they stay
+// inside the slab that holds the facet's corners (what the check accepts).
+TEST(SurfaceChart, PlacementOnAFacetPlanarWithinToleranceIsOnItsLeastSquaresPlane) {
+  const double d = 4e-10;
+  const std::vector<Point> pts{{0, 0, d}, {1, 0, -d}, {1, 1, d}, {0, 1, -d}};
+  const PlaneFit fit = fit_facet_plane(pts, {0, 1, 2, 3}, 1e-9);
+  ASSERT_EQ(fit.status, PlaneStatus::Ok);
+  ASSERT_FALSE(fit.plane.exact);
+  const FacetChart ch = make_chart(fit.plane, pts);
+  std::uint32_t fourth = 0;
+  while (std::count(fit.plane.triple.begin(), fit.plane.triple.end(), fourth)) ++fourth;
+  const Point near_fourth{0.9 * pts[fourth][0] + 0.05, 0.9 * pts[fourth][1] + 0.05, 0};
+  const Point p = place_on_facet(ch, near_fourth);
+  EXPECT_EQ(p[0], near_fourth[0]);
+  EXPECT_EQ(p[1], near_fourth[1]);
+  EXPECT_LE(std::fabs(p[2]), 1e-15);  // the least-squares plane is z = 0
+  EXPECT_LE(std::fabs(p[2]), d);      // inside the corners' slab
 }
 
 TEST(SurfaceOps, SplitUpdatesEveryFacetOfTheSegment) {
