@@ -10,8 +10,8 @@
 //   0b. non-planar faces: a face of four or more corners that is not planar within half the
 //      planarity tolerance (a bilinear quad of a modelling tool) is split into triangles, a
 //      quad along its shorter diagonal inside it as seen along its normal, a larger face by
-//      ear clipping in its plane's
-//      projection (exact orient2d); one that cannot be split (three corners on a line,
+//      the triangulation of its diagonals of largest smallest angle in its plane's
+//      projection (exact orient2d; ear clipping above 96 corners); one that cannot be split (three corners on a line,
 //      a projection that is not simple) is an error (surface_split.cpp). The triangles
 //      keep the face's line, marker and number;
 //   1. duplicate vertices: vertices with exactly equal coordinates (STL repeats every

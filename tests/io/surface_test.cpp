@@ -195,6 +195,54 @@ TEST(Surface, ConcaveNonPlanarQuadSplitsAlongItsInnerDiagonal) {
   }
 }
 
+// An L-shaped face (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), its inner corner a hair beyond the
+// line from (2,0) to (0,2) and raised 1e-7 (non-planar): ear clipping took the ear at (0,0)
+// first, then those at (2,1) and (1,2), and left the triangle (2,0) (1,1) (0,2), 1e-7 high
+// in the view along the normal, whose segments 1e-7 apart drove the mesher to that size (a rotated
+// L prism written with 7 digits: exit 1). The split is the triangulation of largest
+// smallest angle: 45 degrees here.
+TEST(Surface, NonPlanarFaceSplitsIntoItsBestShapedTriangulation) {
+  Surface s;
+  s.source = "l.off";
+  for (const Point& p : {Point{0, 0, 0}, Point{2, 0, 0}, Point{2, 1, 0}, Point{1 + 1e-7, 1 + 1e-7, 1e-7},
+                         Point{1, 2, 0}, Point{0, 2, 0}})
+    s.add_point(p, 0, static_cast<std::int64_t>(s.points.size()));
+  const std::uint32_t l[6] = {0, 1, 2, 3, 4, 5};
+  s.add_face(l, 3, 0);
+  const auto split = split_nonplanar_faces(s, 1e-9);
+  ASSERT_TRUE(split.has_value());
+  ASSERT_EQ(split->face_count(), 4u);
+  for (std::size_t f = 0; f < 4; ++f) {
+    const auto c = split->face(f);
+    double smallest = 180;
+    for (int i = 0; i < 3; ++i) {
+      const Point &o = split->points[c[i]], &u = split->points[c[(i + 1) % 3]],
+                  &v = split->points[c[(i + 2) % 3]];
+      double dot = 0, lu = 0, lv = 0;
+      for (int k = 0; k < 3; ++k) {
+        dot += (u[k] - o[k]) * (v[k] - o[k]);
+        lu += (u[k] - o[k]) * (u[k] - o[k]);
+        lv += (v[k] - o[k]) * (v[k] - o[k]);
+      }
+      smallest = std::min(smallest, std::acos(dot / std::sqrt(lu * lv)) * 180 / 3.141592653589793);
+    }
+    EXPECT_GT(smallest, 44.9) << "triangle " << f;
+  }
+  // Above 96 corners, ear clipping: a 120-gon, every other corner raised, in 118 triangles.
+  Surface big;
+  big.source = "big.off";
+  std::vector<std::uint32_t> ring;
+  for (int i = 0; i < 120; ++i) {
+    const double t = 2 * 3.141592653589793 * i / 120;
+    big.add_point({std::cos(t), std::sin(t), i % 2 ? 1e-6 : 0.0}, 0, i);
+    ring.push_back(static_cast<std::uint32_t>(i));
+  }
+  big.add_face(ring, 1, 0);
+  const auto fan = split_nonplanar_faces(big, 1e-9);
+  ASSERT_TRUE(fan.has_value());
+  EXPECT_EQ(fan->face_count(), 118u);
+}
+
 TEST(Surface, SubnormalCoordinatesReadOrFailAsInput) {
   // A box whose corners carry subnormal and huge coordinates (a fuzzer's find): the double
   // normal of a face's plane triple underflows, and step 5's projection axis must still be
