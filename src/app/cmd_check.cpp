@@ -82,7 +82,7 @@ int run_check(const CheckArgs& args) {
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
   opt.threads = args.threads;
-  opt.relative_tolerance = check_tolerance(args.planarity_tolerance);
+  set_check_tolerances(args.planarity_tolerance, opt);
   if (progress.enabled())
     opt.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
   const bool every_finding = args.explain || args.vtu;

@@ -326,7 +326,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     check::Options co;
     co.ratio_bound = opt.ratio;
     co.threads = args.threads;
-    co.relative_tolerance = check_tolerance(args.planarity_tolerance);
+    set_check_tolerances(args.planarity_tolerance, co);
     if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/summary.hpp"
+#include "check/check.hpp"
 #include "domain/domain.hpp"
 #include "mesh/mesh_data.hpp"
 #include "mesh/plc.hpp"
@@ -68,13 +69,14 @@ inline domain::PlcOptions plc_options(const std::optional<double>& planarity) {
   if (planarity) o.planarity_tolerance = *planarity;
   return o;
 }
-// The check's relative tolerance under --planarity-tolerance T (absent: the domain
-// analysis's default T): vertices within 2T facet diameters of a facet's plane count as on
-// it. The input's facets deviate up to T from their least-squares planes, and the mesher
-// rounds a facet's new vertices onto the plane of three of its vertices; a tighter check
-// would refuse facets the mesher accepted.
-inline double check_tolerance(const std::optional<double>& planarity) {
-  return 2 * plc_options(planarity).planarity_tolerance;
+// The check's tolerances under --planarity-tolerance T (absent: the domain analysis's
+// default T): vertices within 2T facet diameters of the least-squares plane of a facet
+// planar only within tolerance count as on it (its vertices lie within T, the new ones
+// pdr mesh puts on that plane); for exactly planar facets and segments, within
+// max(2T, the check's default) when T is given, else the check's default (rounding only).
+inline void set_check_tolerances(const std::optional<double>& planarity, check::Options& o) {
+  o.inexact_facet_tolerance = 2 * plc_options(planarity).planarity_tolerance;
+  if (planarity) o.relative_tolerance = std::max(o.relative_tolerance, 2 * *planarity);
 }
 int run_mesh(const MeshArgs& args);
 // The mesher on a PLC (shared with the default job and the Python module); fills

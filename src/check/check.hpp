@@ -86,11 +86,16 @@ struct Options {
   std::size_t max_reported = 20;      // findings kept per check (the first ones by id)
   unsigned threads = 2;               // worker threads for the per-tet loops (>= 1)
   // Input classification only (conformity, encroachment): a mesh vertex within
-  // relative_tolerance * (facet diameter) of a facet's plane, or within
-  // relative_tolerance * |AB| of a segment AB's line, counts as lying on it. The default
-  // is twice the domain analysis's default planarity tolerance (1e-9, like TetGen's -T):
-  // the facets pdr mesh accepts deviate that much from their planes.
-  double relative_tolerance = 2e-9;
+  // relative_tolerance * (facet diameter) of an exactly planar facet's plane, or within
+  // relative_tolerance * |AB| of a segment AB's line, counts as lying on it (new vertices
+  // there are rounded, a few ulps off).
+  double relative_tolerance = 1e-10;
+  // The same for a facet whose input vertices are not exactly coplanar, against the
+  // least-squares plane of its vertices: twice the domain analysis's default planarity
+  // tolerance T (1e-9). Such a facet's vertices lie within T diameters of that plane, and
+  // pdr mesh puts new vertices on it (surface/chart.hpp); T more is the margin for another
+  // mesher's placement.
+  double inexact_facet_tolerance = 2e-9;
   // Pieces of the domain that bound no region (a facet, or a part of one, with voids or the
   // outside on both sides, and the segments only such pieces hold): TetGen drops them, and
   // so does pdr's domain analysis (domain::PlcDomain::dropped). The mesh need not hold

@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "check/signs.hpp"
-#include "geom/plane_fit.hpp"
 
 namespace pdr::check {
 namespace {
@@ -29,6 +28,37 @@ Box padded(Box b, double pad) {
     b.hi[i] += pad;
   }
   return b;
+}
+
+// The least-squares plane of points: their centroid, and the unit normal spanned by the
+// scatter matrix C = sum (p - c)(p - c)^T. Its rows span the directions along the points'
+// spread, so the largest cross product of two rows is the direction of least spread (the
+// eigenvector of C's smallest eigenvalue, to within the ratio of the smallest eigenvalue to
+// the others: the square of the facet's deviation). The mesher finds the same plane by
+// Jacobi rotations (domain/plane.cpp); this is a separate computation.
+struct FittedPlane {
+  Point centroid{};
+  Vec normal{};
+};
+FittedPlane least_squares_plane(const std::vector<Point>& pts) {
+  FittedPlane f;
+  for (const Point& p : pts)
+    for (int k = 0; k < 3; ++k) f.centroid[k] += p[k] / static_cast<double>(pts.size());
+  std::array<Vec, 3> c{};
+  for (const Point& p : pts) {
+    const Vec d = sub(p, f.centroid);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) c[i][j] += d[i] * d[j];
+  }
+  double best = -1;
+  for (const auto& [i, j] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}}) {
+    const Vec x = cross(c[i], c[j]);
+    if (const double l = norm(x); l > best) {
+      best = l;
+      f.normal = {x[0] / l, x[1] / l, x[2] / l};
+    }
+  }
+  return f;
 }
 
 bool exactly_collinear(const Point& a, const Point& b, const Point& p) {
@@ -102,7 +132,7 @@ using SegmentIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::size
 
 FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const DomainMap& m,
                    const SegmentIndex& seg_index, const MeshView& mesh, const PointGrid& grid,
-                   double tol, const std::vector<std::uint8_t>& dropped_vertex) {
+                   double tol, double inexact_tol, const std::vector<std::uint8_t>& dropped_vertex) {
   FacetMap fm;
   // The facet's vertices: equal to their mesh vertices, which a mesher may leave out where
   // they lie only on dropped pieces (Options::dropped_vertices).
@@ -148,12 +178,31 @@ FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const Dom
   fm.drop = drop;
   const Box fbox = bounding_box(pts);
   const double diam = norm(sub(fbox.hi, fbox.lo));
-  const double dist = tol > 0 ? tol * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0;
-  const geom::FittedPlane lsq = geom::fit_plane(pts);
+  // Exactly planar (every input vertex on plane abc): the plane abc, with `tol`. Planar only
+  // within tolerance: the least-squares plane of the distinct input vertices, with
+  // `inexact_tol`, and no exact shortcut (plane abc may lie several times the deviation off
+  // other vertices).
+  const bool exact = std::all_of(pts.begin(), pts.end(), [&](const Point& v) {
+    return signs::orient3d(a, b, c, v) == Sign::Zero;
+  });
+  const double t = exact ? tol : inexact_tol;
+  const double dist = t > 0 ? t * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0;
+  std::vector<Point> distinct = pts;
+  std::sort(distinct.begin(), distinct.end(), lex_less);
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  const FittedPlane fit = exact ? FittedPlane{} : least_squares_plane(distinct);
+  const Vec nn_abc = n;
+  const double len_abc = norm(n);
   auto on_plane = [&](const Point& p, bool& tolerance) {
     tolerance = false;
-    if (signs::orient3d(a, b, c, p) == Sign::Zero) return true;
-    tolerance = std::fabs(geom::signed_distance(lsq, p)) <= dist;
+    if (exact) {
+      if (signs::orient3d(a, b, c, p) == Sign::Zero) return true;
+      const Vec w = sub(p, a);
+      tolerance = std::fabs(nn_abc[0] * w[0] + nn_abc[1] * w[1] + nn_abc[2] * w[2]) <= dist * len_abc;
+      return tolerance;
+    }
+    const Vec w = sub(p, fit.centroid);
+    tolerance = std::fabs(fit.normal[0] * w[0] + fit.normal[1] * w[1] + fit.normal[2] * w[2]) <= dist;
     return tolerance;
   };
   for (const Point& v : pts) {
@@ -352,7 +401,8 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
   for (const std::uint32_t v : options.dropped_vertices)
     if (v < dropped_vertex.size()) dropped_vertex[v] = 1;
   for (const PlcFacet& f : domain.facets)
-    m.facets.push_back(map_facet(f, domain.points, m, seg_index, mesh, grid, tol, dropped_vertex));
+    m.facets.push_back(map_facet(f, domain.points, m, seg_index, mesh, grid, tol,
+                                 options.inexact_facet_tolerance, dropped_vertex));
   mark_dropped(m, domain.points, mesh, options);
   assign_faces(m, mesh, topo);
   return m;

@@ -5,16 +5,19 @@
 // Input classification, the only tolerance in pdr_check. Meshers compute vertices on
 // tilted segments and facets in floating point, so they are rarely exactly collinear or
 // coplanar with the input. A mesh vertex p counts as on the line of segment AB if it is
-// exactly collinear, or if dist(p, line AB) <= tol * |AB| + r; on the plane of facet F if
-// it is exactly coplanar with three spanning vertices a, b, c of F, or if dist(p, P) <=
-// tol * diam(F) + r, P the least-squares plane of F's vertices (geom/plane_fit.hpp; diam:
-// the diagonal of F's bounding box), tol = Options::relative_tolerance, r = 4 ulps of the
+// exactly collinear, or if dist(p, line AB) <= tol * |AB| + r; on the plane of an exactly
+// planar facet F (all its vertices on the plane of a spanning triple a, b, c) if it is
+// exactly coplanar with a, b, c, or if dist(p, plane abc) <= tol * diam(F) + r; on a facet
+// planar only within tolerance if dist(p, P) <= tol' * diam(F) + r, P the least-squares
+// plane of F's distinct vertices (diam: the diagonal of F's bounding box), tol =
+// Options::relative_tolerance, tol' = Options::inexact_facet_tolerance, r = 4 ulps of the
 // largest coordinate of AB (of F's box): the rounding of a vertex computed there, which
 // far from the origin exceeds tol |AB| (tol = 0: exact only, no r either). A facet planar
-// within T (pdr mesh's classification) has its vertices, and so its convex hull, within
-// T diam(F) of P; with tol = 2T the check accepts them and anything a mesher put within
-// another T diam(F) of that slab. (A plane through three of F's vertices instead may lie
-// 3T diam(F) off a fourth: a quad's alternating deviations.)
+// within T (pdr mesh's classification) has its vertices within T diam(F) of P, and so,
+// the slab being convex, its whole hull; with tol' = 2T the check accepts them and what a
+// mesher put within another T diam(F) of that slab. (The plane through three corners of a
+// quad whose corners deviate alternately by +-h lies 4h off the fourth corner, 3h off P
+// there: no plane of a triple serves for such a facet.)
 // The distances are computed in double (this classifies input; it decides nothing about
 // the mesh). Everything after the classification is exact: the order of vertices along a
 // segment, whether they lie between its ends, face centroids in the facet region, areas.

@@ -5,7 +5,8 @@
 //   { "schema_version": 1, "ok": bool,
 //     "mesh": {"points": n, "tets": n, "boundary_faces": n}, "domain": bool,
 //     "options": {"ratio_bound": x|null, "min_edge": x|null, "max_reported": n,
-//                 "threads": n, "relative_tolerance": x, "check_overlap": bool},
+//                 "threads": n, "relative_tolerance": x, "inexact_facet_tolerance": x,
+//                 "check_overlap": bool},
 //     "checks": [ {"id", "invariant", "status": "pass"|"warn"|"fail"|"skipped", "reason",
 //                  "checked", "violations", "counts": {name: n}, "values": {name: x},
 //                  "findings": [ {"kind", "id": n|null, "vertices": [n], "points": [[x,y,z]],
@@ -108,6 +109,7 @@ nlohmann::json to_json(const Report& report, bool with_timing) {
                   {"max_reported", o.max_reported},
                   {"threads", o.threads},
                   {"relative_tolerance", o.relative_tolerance},
+                  {"inexact_facet_tolerance", o.inexact_facet_tolerance},
                   {"check_overlap", o.check_overlap}};
   json checks = json::array();
   for (const CheckResult& r : report.checks) {

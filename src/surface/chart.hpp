@@ -28,10 +28,13 @@
 //     tetrahedralization of the facet's vertices, with the same perturbation
 //     (insphere_sos lifts |p|^2 by the same ranks), and it stays a face of the
 //     tetrahedralization of all vertices as long as no other vertex is inside that
-//     sphere. Vertices a few ulps off P (rounded constructions on a tilted facet, facets
-//     planar only within tolerance) change nothing in this argument: the sphere is centred
-//     on P, so it is within rounding of the equatorial sphere of abc, which the refinement
-//     keeps free of other vertices (paper §1.1 "encroached").
+//     sphere. Vertices off P (rounded constructions on a tilted facet a few ulps off;
+//     on a facet planar only within tolerance, its vertices and the new ones on its
+//     least-squares plane, up to a few times T diameters off) change nothing in this
+//     argument: the sphere is centred on P, so it is within that distance of the
+//     equatorial sphere of abc, which the refinement keeps free of other vertices (paper
+//     §1.1 "encroached"); for coplanar points the test is the in-circle test on their own
+//     plane (below).
 //   - Coplanar points. For coplanar a, b, c, d every sphere through a, b, c meets their
 //     plane in their circle: the test is the 3D circle test, and with o = chart_orient(a,
 //     b, c) != 0, chart_incircle * o == incircle3 when that is nonzero and == incircle3_sos
@@ -58,9 +61,10 @@
 // (relative to |p - t0| and |p|) of the plane, and exactly on it when the facet is
 // axis-parallel (n_i = n_j = 0 exactly, so p_k = t0_k). On a facet planar only within
 // tolerance it is the least-squares plane (o its centroid, n its unit normal:
-// geom/plane_fit.hpp), whose slab of half-width T times the diameter holds every vertex of
+// domain/plane.hpp), whose slab of half-width T times the diameter holds every vertex of
 // the facet: the plane through t0, t1, t2 passes through three of them and may lie several
-// times that far off the others (the fourth corner of a quad: three times), so new
+// times that far off the least-squares plane elsewhere (at the fourth corner of a quad whose
+// corners deviate alternately by +-h: 3h off it, 4h off the corner), so new
 // vertices placed there could leave the slab that an independent check of the facet
 // accepts (check/domain.hpp). The chart position, which the triangulation decisions see,
 // is exactly the constructed one either way. Exact coplanarity of constructed points is

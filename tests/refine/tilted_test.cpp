@@ -9,6 +9,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <array>
+#include <map>
 #include <cmath>
 #include <string>
 
@@ -98,6 +99,8 @@ struct Outcome {
                                    // domain tests inadmissible)
   std::string stop, text, audit_note;
   std::vector<std::string> failed;  // the check's failed ids
+  std::map<std::string, check::Status> status;  // every check's status
+  std::uint64_t skipped_nonplanar = 0;          // facets conformity.facets did not judge
   bool ok = false;
 };
 
@@ -126,8 +129,12 @@ Outcome run(const Plc& plc, std::optional<double> max_volume) {
   out.audit_note = rr.stats.audit_note;
   out.ok = rep.ok() && audit_volume(vm).empty();
   out.text = check::to_text(rep);
-  for (const auto& c : rep.checks)
+  for (const auto& c : rep.checks) {
     if (c.status == check::Status::Fail) out.failed.push_back(c.id);
+    out.status[c.id] = c.status;
+    if (c.id == "conformity.facets" && c.counts.count("skipped_nonplanar"))
+      out.skipped_nonplanar = c.counts.at("skipped_nonplanar");
+  }
   return out;
 }
 
@@ -182,7 +189,8 @@ TEST(RefineTilted, RotatedHexagonalPrism) {
 // A unit box whose top corners sit alternately e above and below z = 1, e = 0.9e-9 of the
 // top's diameter: planar within the tolerance (1e-9), its least-squares plane z = 1. The
 // plane through three corners lies 4e off the fourth, so a vertex placed on it near that
-// corner was 3e = 2.7e-9 diameters off the top's slab, beyond the check's 2T: the top was
+// corner was up to 3e = 2.7e-9 diameters off the least-squares plane, beyond the check's
+// 2T: the top was
 // found uncovered (conformity.facets and .volume at 0.002). On the least-squares plane every
 // new vertex stays in the slab. The corners' right angles are bent by about 2e, beyond the
 // angle classification: the domain tests inadmissible, and encroachment may remain there.
@@ -196,6 +204,9 @@ TEST(RefineTilted, WarpedTopWithinToleranceConforms) {
   for (const double v : {0.01, 0.002}) {
     const Outcome o = run(p, v);
     EXPECT_EQ(o.tolerance_facets, 1u);
+    EXPECT_EQ(o.status.at("conformity.facets"), check::Status::Pass) << o.text;
+    EXPECT_EQ(o.status.at("conformity.volume"), check::Status::Pass) << o.text;
+    EXPECT_EQ(o.skipped_nonplanar, 0u);
     for (const std::string& id : o.failed)
       EXPECT_EQ(id.rfind("encroachment.", 0), 0u) << "max volume " << v << "\n" << o.text;
   }
@@ -207,9 +218,10 @@ RC_GTEST_PROP(RefineTilted, RandomRotationsMeshAndPass, ()) {
                    *rc::gen::inRange(1, 11) / 10.0};
   const double angle = *rc::gen::inRange(1, 3141) / 1000.0;
   const double v = std::ldexp(1.0, -*rc::gen::inRange(3, 8));
-  // Printed with 9 digits (a float writer's STL or .poly), a side is planar only to within
-  // some 1e-10 of its diameter, up to the tolerance (sides beyond it are refused: such
-  // cases are discarded); WarpedTopWithinToleranceConforms holds the worst case.
+  // Printed with 9 digits (a float writer's STL or .poly), coordinates of 1 to 2 move by up
+  // to 5e-9, and a side is planar only to within some 1e-10 to 1e-8 of its diameter: those
+  // beyond the tolerance are refused (the case is discarded, about half of them);
+  // WarpedTopWithinToleranceConforms holds the worst case accepted.
   const int digits = *rc::gen::elementOf(std::vector<int>{17, 9});
   const Plc p = test::printed(transformed(hex ? prism(6, 1.0, 1.5, 0.0) : box(1.0, 0.8, 0.6),
                                           rotation(axis, angle), {0.25, -0.5, 1.0}),
@@ -223,10 +235,16 @@ RC_GTEST_PROP(RefineTilted, RandomRotationsMeshAndPass, ()) {
   // 9 digits bend a right angle by up to some 1e-9 radians, which the angle classification
   // (domain/angles.hpp) may read as acute.
   RC_ASSERT(o.admissible || digits == 9);
-  RC_ASSERT(o.leftovers == 0u);
   RC_ASSERT(o.stop.empty());
-  RC_ASSERT(o.ok);
-  RC_ASSERT(o.audit_failures == 0u);
+  if (o.admissible) {
+    RC_ASSERT(o.leftovers == 0u);
+    RC_ASSERT(o.ok);
+    RC_ASSERT(o.audit_failures == 0u);
+  } else {
+    // Outside the theory by a hair: encroachment may remain at the bent corners (exit 3),
+    // nothing else may fail.
+    for (const std::string& id : o.failed) RC_ASSERT(id.rfind("encroachment.", 0) == 0u);
+  }
 }
 
 }  // namespace
