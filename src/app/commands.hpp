@@ -70,12 +70,13 @@ inline domain::PlcOptions plc_options(const std::optional<double>& planarity) {
   return o;
 }
 // The check's tolerances under --planarity-tolerance T (absent: the domain analysis's
-// default T): vertices within 2T facet diameters of the least-squares plane of a facet
-// planar only within tolerance count as on it (its vertices lie within T, the new ones
-// pdr mesh puts on that plane); for exactly planar facets and segments, within
-// max(2T, the check's default) when T is given, else the check's default (rounding only).
+// default T): vertices within 8T facet diameters of the least-squares plane of a facet
+// planar only within tolerance count as on it (its vertices lie within T of it, the new
+// ones pdr mesh puts on the plane of three of them within 7T: surface/chart.hpp); for
+// exactly planar facets and segments, within max(2T, the check's default) when T is
+// given, else the check's default (rounding only).
 inline void set_check_tolerances(const std::optional<double>& planarity, check::Options& o) {
-  o.inexact_facet_tolerance = 2 * plc_options(planarity).planarity_tolerance;
+  o.inexact_facet_tolerance = 8 * plc_options(planarity).planarity_tolerance;
   if (planarity) o.relative_tolerance = std::max(o.relative_tolerance, 2 * *planarity);
 }
 int run_mesh(const MeshArgs& args);

@@ -91,11 +91,10 @@ struct Options {
   // there are rounded, a few ulps off).
   double relative_tolerance = 1e-10;
   // The same for a facet whose input vertices are not exactly coplanar, against the
-  // least-squares plane of its vertices: twice the domain analysis's default planarity
-  // tolerance T (1e-9). Such a facet's vertices lie within T diameters of that plane, and
-  // pdr mesh puts new vertices on it (surface/chart.hpp); T more is the margin for another
-  // mesher's placement.
-  double inexact_facet_tolerance = 2e-9;
+  // least-squares plane of its vertices: 8T, T the domain analysis's default planarity
+  // tolerance (1e-9). Such a facet's vertices lie within T diameters of that plane, and
+  // pdr mesh puts new vertices on the plane of three of them, within 7T (surface/chart.hpp).
+  double inexact_facet_tolerance = 8e-9;
   // Pieces of the domain that bound no region (a facet, or a part of one, with voids or the
   // outside on both sides, and the segments only such pieces hold): TetGen drops them, and
   // so does pdr's domain analysis (domain::PlcDomain::dropped). The mesh need not hold

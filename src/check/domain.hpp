@@ -14,10 +14,11 @@
 // largest coordinate of AB (of F's box): the rounding of a vertex computed there, which
 // far from the origin exceeds tol |AB| (tol = 0: exact only, no r either). A facet planar
 // within T (pdr mesh's classification) has its vertices within T diam(F) of P, and so,
-// the slab being convex, its whole hull; with tol' = 2T the check accepts them and what a
-// mesher put within another T diam(F) of that slab. (The plane through three corners of a
-// quad whose corners deviate alternately by +-h lies 4h off the fourth corner, 3h off P
-// there: no plane of a triple serves for such a facet.)
+// the slab being convex, its whole hull; pdr mesh puts new vertices on the plane of three
+// of them, within 7T diam(F) of P over the facet (surface/chart.hpp), and tol' = 8T
+// accepts them. (The plane through three corners of a quad whose corners deviate
+// alternately by +-h lies 4h off the fourth corner, 3h off P there: no plane of a triple
+// serves as the reference for such a facet.)
 // The distances are computed in double (this classifies input; it decides nothing about
 // the mesh). Everything after the classification is exact: the order of vertices along a
 // segment, whether they lie between its ends, face centroids in the facet region, areas.

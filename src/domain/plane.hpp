@@ -34,9 +34,8 @@ namespace pdr::domain {
 struct FacetPlane {
   std::array<std::uint32_t, 3> triple{};  // defining vertices (global ids), non-collinear
   Projection projection;                  // chart: t0 t1 t2 counter-clockwise
-  Point normal{};                         // unit normal of the least-squares plane (report;
-                                          // placement when not exact: surface/chart.hpp)
-  Point centroid{};                       // of the facet's vertices (likewise)
+  Point normal{};                         // unit normal of the least-squares plane (report)
+  Point centroid{};                       // of the facet's vertices (report)
   double diameter = 0;                    // bounding-box diagonal of the facet's vertices
   double max_deviation = 0;               // max distance to the fitted plane / diameter
   bool exact = false;                     // exactly planar (see above)

@@ -119,7 +119,7 @@ void VertexZones::add(const surface::SurfaceMesh& m, std::uint32_t v, double bou
   std::sort(facets.begin(), facets.end());
   facets.erase(std::unique(facets.begin(), facets.end()), facets.end());
   for (const std::uint32_t f : facets) {
-    const Point n = unit(m.facets[f].chart.place_normal);
+    const Point n = unit(m.facets[f].chart.normal);
     std::vector<std::pair<double, std::uint32_t>> dirs;  // angle, index into z.segments
     Point e1{};
     for (std::uint32_t i = 0; i < z.segments.size(); ++i) {

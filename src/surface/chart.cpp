@@ -43,15 +43,7 @@ FacetChart make_chart(const domain::FacetPlane& plane, const std::vector<Point>&
   ch.t2 = t2;
   const Point u{t1[0] - t0[0], t1[1] - t0[1], t1[2] - t0[2]};
   const Point v{t2[0] - t0[0], t2[1] - t0[1], t2[2] - t0[2]};
-  ch.place_origin = t0;
-  ch.place_normal = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  if (!plane.exact) {
-    // The least-squares plane, its normal turned to the triple's side.
-    const Point& n = plane.normal;
-    const double side = n[0] * ch.place_normal[0] + n[1] * ch.place_normal[1] + n[2] * ch.place_normal[2];
-    ch.place_origin = plane.centroid;
-    ch.place_normal = side < 0 ? Point{-n[0], -n[1], -n[2]} : n;
-  }
+  ch.normal = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
   return ch;
 }
 
@@ -61,8 +53,8 @@ Sign chart_orient(const FacetChart& ch, const Point& a, const Point& b, const Po
 
 Point place_on_facet(const FacetChart& ch, Point p) {
   const int k = ch.projection.drop, i = (k + 1) % 3, j = (k + 2) % 3;
-  const Point& o = ch.place_origin;
-  const Point& n = ch.place_normal;
+  const Point& o = ch.origin;
+  const Point& n = ch.normal;
   // n[k] != 0: the chart drops the largest normal component, nonzero for a proper triple
   // (a rounded cross product of a proper triple could still vanish for extreme inputs;
   // then p stays as constructed).

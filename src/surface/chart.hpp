@@ -28,13 +28,10 @@
 //     tetrahedralization of the facet's vertices, with the same perturbation
 //     (insphere_sos lifts |p|^2 by the same ranks), and it stays a face of the
 //     tetrahedralization of all vertices as long as no other vertex is inside that
-//     sphere. Vertices off P (rounded constructions on a tilted facet a few ulps off;
-//     on a facet planar only within tolerance, its vertices and the new ones on its
-//     least-squares plane, up to a few times T diameters off) change nothing in this
-//     argument: the sphere is centred on P, so it is within that distance of the
-//     equatorial sphere of abc, which the refinement keeps free of other vertices (paper
-//     §1.1 "encroached"); for coplanar points the test is the in-circle test on their own
-//     plane (below).
+//     sphere. Vertices a few ulps off P (rounded constructions on a tilted facet, facets
+//     planar only within tolerance) change nothing in this argument: the sphere is centred
+//     on P, so it is within rounding of the equatorial sphere of abc, which the refinement
+//     keeps free of other vertices (paper §1.1 "encroached").
 //   - Coplanar points. For coplanar a, b, c, d every sphere through a, b, c meets their
 //     plane in their circle: the test is the 3D circle test, and with o = chart_orient(a,
 //     b, c) != 0, chart_incircle * o == incircle3 when that is nonzero and == incircle3_sos
@@ -55,20 +52,26 @@
 //   chart images (circles map to ellipses); the 3D equatorial-ball test alone (exact
 //   witness for T, but not a lifting, so flips and cavities could cycle off the plane).
 // Placement. place_on_facet keeps the chart coordinates of p and recomputes the dropped
-// coordinate k from the facet's placement plane: p_k = o_k - (n_i (p_i - o_i) + n_j (p_j -
-// o_j)) / n_k. On an exactly planar facet that is the plane through t0, t1, t2 (o = t0,
-// n = (t1-t0)x(t2-t0) in double, |n_k| >= |n| / sqrt(3)): the point is within a few ulps
-// (relative to |p - t0| and |p|) of the plane, and exactly on it when the facet is
-// axis-parallel (n_i = n_j = 0 exactly, so p_k = t0_k). On a facet planar only within
-// tolerance it is the least-squares plane (o its centroid, n its unit normal:
-// domain/plane.hpp), whose slab of half-width T times the diameter holds every vertex of
-// the facet: the plane through t0, t1, t2 passes through three of them and may lie several
-// times that far off the least-squares plane elsewhere (at the fourth corner of a quad whose
-// corners deviate alternately by +-h: 3h off it, 4h off the corner), so new
-// vertices placed there could leave the slab that an independent check of the facet
-// accepts (check/domain.hpp). The chart position, which the triangulation decisions see,
-// is exactly the constructed one either way. Exact coplanarity of constructed points is
-// not guaranteed by rounding otherwise; no decision depends on it (see above).
+// coordinate k from the plane through t0, t1, t2 (the facet's plane as the domain analysis
+// defines it): p_k = t0_k - (n_i (p_i - t0_i) + n_j (p_j - t0_j)) / n_k, n = (t1-t0)x(t2-t0)
+// in double, |n_k| >= |n| / sqrt(3). The chart position, which the triangulation decisions
+// see, is exactly the constructed one; the point is within a few ulps (relative to |p - t0|
+// and |p|) of the plane, and exactly on it when the facet is axis-parallel (n_i = n_j = 0
+// exactly, so p_k = t0_k). Exact coplanarity of constructed points is not guaranteed by
+// rounding otherwise; no decision depends on it (see above).
+//   On a facet planar only within tolerance T (every vertex within T diam of its
+// least-squares plane L, diam its bounding-box diagonal) the plane through t0, t1, t2 lies
+// within 7 T diam of L over the facet: a point x of the facet is t0 + l1 (t1 - t0) + l2
+// (t2 - t0) with |l2| <= 1 (t2 maximises the area with t0 and t1), |l1| <= 2 (t1 is the
+// farthest vertex from t0, and so at least as far as x and t2), so |1 - l1 - l2| <= 4, and
+// the plane's offset from L at x, l0 d0 + l1 d1 + l2 d2 with |d_i| <= T diam, is at most
+// 7 T diam. The check counts vertices within 8T diam of L as on such a facet
+// (check::Options::inexact_facet_tolerance). Placing on L instead keeps new points within
+// T diam, but every input vertex of the facet then lies off the placement plane, and
+// near-cocircular quadruples of new points around one cascade into flat-tet repairs
+// toward it (a rotated star prism printed with 9 digits: 17,577 repairs and an edge of
+// 1.8e-13 at 20,000 vertices, instead of 7 repairs and 2,325 vertices); through t0, t1,
+// t2 three of them lie on it.
 #pragma once
 
 #include "domain/exact.hpp"
@@ -81,9 +84,7 @@ struct FacetChart {
   domain::Projection projection;  // t0 t1 t2 counter-clockwise
   Point origin{};         // t0: a point of the plane and the lift's origin
   Point t1{}, t2{};       // the rest of the defining triple: the plane of the in-circle test
-  Point place_origin{};   // placement only (above): t0, or the least-squares centroid
-  Point place_normal{};   // (t1 - t0) x (t2 - t0) in double, or the least-squares normal
-                          // on its side
+  Point normal{};         // (t1 - t0) x (t2 - t0), in double: placement only
   domain::P2 operator()(const Point& p) const { return projection(p); }
 };
 

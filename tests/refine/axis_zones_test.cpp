@@ -120,9 +120,9 @@ RC_GTEST_PROP(AxisZones, CopiesKeepDistancesAndLieOnTheirWalls, ()) {
         RC_ASSERT(std::abs(r1 - r0) <= 1e-12 * (1 + r0));
         // On the copy's facet plane, within rounding of the placement.
         const FacetChart& ch = s.mesh.facets[c.facet].chart;
-        Point nrm = ch.place_normal;
+        Point nrm = ch.normal;
         const double nl = std::sqrt(dot(nrm, nrm));
-        RC_ASSERT(std::abs(dot(sub(c.p, ch.place_origin), nrm)) / nl <= 1e-12);
+        RC_ASSERT(std::abs(dot(sub(c.p, ch.origin), nrm)) / nl <= 1e-12);
         // Inside its facet (every wall holds the strip along the axis).
         const auto loc = locate_in_facet(s.mesh, c.facet, c.p, chain[1]);
         RC_ASSERT(loc.has_value());

@@ -188,12 +188,12 @@ TEST(RefineTilted, RotatedHexagonalPrism) {
 
 // A unit box whose top corners sit alternately e above and below z = 1, e = 0.9e-9 of the
 // top's diameter: planar within the tolerance (1e-9), its least-squares plane z = 1. The
-// plane through three corners lies 4e off the fourth, so a vertex placed on it near that
-// corner was up to 3e = 2.7e-9 diameters off the least-squares plane, beyond the check's
-// 2T: the top was
-// found uncovered (conformity.facets and .volume at 0.002). On the least-squares plane every
-// new vertex stays in the slab. The corners' right angles are bent by about 2e, beyond the
-// angle classification: the domain tests inadmissible, and encroachment may remain there.
+// plane through three corners, where new vertices go, lies 4e off the fourth, so new
+// vertices near that corner are up to 3e = 2.7e-9 diameters off the least-squares plane:
+// with the check counting only 2T as on the facet, the top was found uncovered
+// (conformity.facets and .volume at 0.002); it counts 8T (surface/chart.hpp: at most 7T).
+// The corners' right angles are bent by about 2e, beyond the angle classification: the
+// domain tests inadmissible, and encroachment may remain there.
 TEST(RefineTilted, WarpedTopWithinToleranceConforms) {
   Plc p = box(1, 1, 1);
   const double e = 0.9e-9 * std::sqrt(2.0);

@@ -204,7 +204,7 @@ RC_GTEST_PROP(VertexZones, ShellsOfAPyramidsApexLieOnTheSphereInTheirFacets, ())
     if (sp.facet != VertexZones::kNone) {
       // Inside facet sp.facet = triangle (i, i + 1, apex): on its plane, within its wedge.
       const surface::SurfaceFacet& f = m.facets[sp.facet];
-      const Point nrm = unit(f.chart.place_normal);
+      const Point nrm = unit(f.chart.normal);
       RC_ASSERT(std::abs(dot(nrm, d)) <= 1e-9 * r);
       std::vector<Point> sides;
       for (const std::uint32_t g : f.segments) {

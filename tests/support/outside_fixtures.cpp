@@ -9,6 +9,8 @@
 #include <random>
 #include <utility>
 
+#include "io/surface.hpp"
+
 namespace pdr::test {
 
 std::vector<double> corner_angles(const std::vector<P2d>& p) {
@@ -65,6 +67,19 @@ Plc printed(Plc plc, int digits) {
       x = std::strtod(buf, nullptr);
     }
   });
+}
+
+Plc through_surface(const Plc& plc) {
+  if (!plc.holes.empty() || !plc.regions.empty()) return plc;
+  io::Surface s;
+  s.source = plc.source.empty() ? "generated.off" : plc.source;
+  for (std::size_t i = 0; i < plc.points.size(); ++i)
+    s.add_point(plc.points[i], 0, static_cast<std::int64_t>(i));
+  for (const PlcFacet& f : plc.facets) {
+    if (f.polygons.size() != 1 || !f.holes.empty()) return plc;
+    s.add_face(f.polygons[0], 0, f.marker);
+  }
+  return io::surface_to_plc(s);
 }
 
 namespace {
@@ -179,6 +194,8 @@ rc::Gen<Plc> gen_outside_domain(double min_corner_deg) {
       const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
       const double a = angle(), b = angle(), c = angle();
       plc = rotated(std::move(plc), a, b, c);
+      if (family != 1 && *rc::gen::inRange(0, 2) == 1)
+        plc = through_surface(printed(std::move(plc), *rc::gen::elementOf(std::vector<int>{17, 9, 7})));
     }
     return plc;
   });
@@ -379,6 +396,8 @@ rc::Gen<Plc> gen_pyramid_or_twisted_prism() {
       const auto angle = [] { return *rc::gen::inRange(0, 628) / 100.0; };
       const double a = angle(), b = angle(), c = angle();
       plc = rotated(std::move(plc), a, b, c);
+      if (*rc::gen::inRange(0, 2) == 1)
+        plc = through_surface(printed(std::move(plc), *rc::gen::elementOf(std::vector<int>{17, 9, 7})));
     }
     return plc;
   });

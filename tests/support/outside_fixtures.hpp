@@ -13,6 +13,10 @@
 //   - tees after the paper's Fig. 8(b): a web and a flange whose undersides taper down from
 //     the web to the tips, so the web/underside edges are re-entrant above 270 degrees and
 //     the tips acute, extruded along z.
+// A rotated star prism or tee is, half the time, read back as a surface file of another
+// tool would give it: its polygons as faces, coordinates printed with 17, 9 or 7 digits,
+// through the surface reader (io/surface.hpp: faces non-planar beyond the tolerance split
+// into triangles, near-coplanar ones merged).
 // min_corner_deg bounds the corners of the profiles from below (and reflex ones from above
 // by 360 - min_corner_deg). With the protecting cylinders (refine/split.hpp) 400 cases at
 // 5 degrees end conforming (seed 77); the suite runs 15.
@@ -40,6 +44,10 @@ Plc rotated(Plc plc, double a, double b, double c);
 // p's points as a text file written with printf's %.<digits>g gives them back (an STL or
 // OFF writer of another tool: 9 digits for a float, fewer by hand).
 Plc printed(Plc plc, int digits);
+// plc's facets (one polygon each, no holes) as the faces of a closed surface, through
+// io::surface_to_plc; plc itself if a facet has several polygons or holes, or the domain
+// has holes or regions.
+Plc through_surface(const Plc& plc);
 
 // The prism over a star-shaped profile (about the origin) cut by walls from the axis to the
 // corners `walls` (sorted, at least two): caps split into sectors, Enclosure::HolePoints.
@@ -95,7 +103,8 @@ Plc pyramid(int n, double height);
 // for a large twist, nearly coplanar for a small one), as a CAD tool exports a twisted part.
 Plc twisted_prism(int n, double twist, int layers, double height);
 // Such pyramids (n in [3, 12], height 0.5 to 20) and twisted prisms (n in [3, 6], twist 0 to
-// 1.2, 1 to 8 layers, height 0.5 to 5), half of them turned by a random rotation.
+// 1.2, 1 to 8 layers, height 0.5 to 5), half of them turned by a random rotation, and half
+// of those read back as a surface file printed with 17, 9 or 7 digits (through_surface).
 rc::Gen<Plc> gen_pyramid_or_twisted_prism();
 
 }  // namespace pdr::test
