@@ -58,8 +58,8 @@ struct MeshArgs {
   std::uint64_t inject_latency_us = 0; // mpirun: each message held this long
   std::size_t submeshes = 0;          // mpirun: submeshes of M_o, >= ranks (0: one per rank)
   surface::SurfaceSizing surface_sizing = surface::SurfaceSizing::Auto;  // surface/init.hpp
-  // --planarity-tolerance: the domain analysis's (domain::PlcOptions), and twice it the
-  // check's (check::Options::relative_tolerance); absent: the analysis's default.
+  // --planarity-tolerance: the domain analysis's (domain::PlcOptions), and the check's
+  // (set_check_tolerances below); absent: their defaults.
   std::optional<double> planarity_tolerance;
 };
 CLI::App* add_mesh_command(CLI::App& app, MeshArgs& args);

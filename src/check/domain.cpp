@@ -186,19 +186,21 @@ FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const Dom
     return signs::orient3d(a, b, c, v) == Sign::Zero;
   });
   const double t = exact ? tol : inexact_tol;
-  const double dist = t > 0 ? t * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0;
-  std::vector<Point> distinct = pts;
-  std::sort(distinct.begin(), distinct.end(), lex_less);
-  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-  const FittedPlane fit = exact ? FittedPlane{} : least_squares_plane(distinct);
-  const Vec nn_abc = n;
-  const double len_abc = norm(n);
+  const double dist = t > 0 ? t * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0,
+               nn = norm(n);
+  FittedPlane fit;
+  if (!exact) {
+    std::vector<Point> distinct = pts;
+    std::sort(distinct.begin(), distinct.end(), lex_less);
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    fit = least_squares_plane(distinct);
+  }
   auto on_plane = [&](const Point& p, bool& tolerance) {
     tolerance = false;
     if (exact) {
       if (signs::orient3d(a, b, c, p) == Sign::Zero) return true;
       const Vec w = sub(p, a);
-      tolerance = std::fabs(nn_abc[0] * w[0] + nn_abc[1] * w[1] + nn_abc[2] * w[2]) <= dist * len_abc;
+      tolerance = std::fabs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) <= dist * nn;
       return tolerance;
     }
     const Vec w = sub(p, fit.centroid);

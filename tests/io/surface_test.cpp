@@ -174,17 +174,25 @@ TEST(Surface, NonPlanarFacesSplitIntoTriangles) {
       << m;
 }
 
+// A surface of one face through `corners` in order, on file line `line`.
+Surface one_face(const std::string& source, const std::vector<Point>& corners, std::size_t line) {
+  Surface s;
+  s.source = source;
+  std::vector<std::uint32_t> face;
+  for (const Point& p : corners) {
+    face.push_back(static_cast<std::uint32_t>(s.points.size()));
+    s.add_point(p, 0, static_cast<std::int64_t>(s.points.size()));
+  }
+  s.add_face(face, line, 0);
+  return s;
+}
+
 // A non-planar quad that is concave seen along its normal (corner 3 reflex): its shorter
 // diagonal, 0-2, lies outside it in that view and would fold one triangle over the notch;
 // the split takes 1-3, the diagonal inside.
 TEST(Surface, ConcaveNonPlanarQuadSplitsAlongItsInnerDiagonal) {
-  Surface s;
-  s.source = "q.off";
-  for (const Point& p : {Point{0, 0, 0}, Point{10, 0.5, 0}, Point{0, 1, 0}, Point{5, 0.5, 0.01}})
-    s.add_point(p, 0, static_cast<std::int64_t>(s.points.size()));
-  const std::uint32_t quad[4] = {0, 1, 2, 3};
-  s.add_face(quad, 7, 0);
-  const auto split = split_nonplanar_faces(s, 1e-9);
+  const auto split = split_nonplanar_faces(
+      one_face("q.off", {{0, 0, 0}, {10, 0.5, 0}, {0, 1, 0}, {5, 0.5, 0.01}}, 7), 1e-9);
   ASSERT_TRUE(split.has_value());
   ASSERT_EQ(split->face_count(), 2u);
   for (std::size_t f = 0; f < 2; ++f) {
@@ -202,14 +210,10 @@ TEST(Surface, ConcaveNonPlanarQuadSplitsAlongItsInnerDiagonal) {
 // L prism written with 7 digits: exit 1). The split is the triangulation of largest
 // smallest angle: 45 degrees here.
 TEST(Surface, NonPlanarFaceSplitsIntoItsBestShapedTriangulation) {
-  Surface s;
-  s.source = "l.off";
-  for (const Point& p : {Point{0, 0, 0}, Point{2, 0, 0}, Point{2, 1, 0}, Point{1 + 1e-7, 1 + 1e-7, 1e-7},
-                         Point{1, 2, 0}, Point{0, 2, 0}})
-    s.add_point(p, 0, static_cast<std::int64_t>(s.points.size()));
-  const std::uint32_t l[6] = {0, 1, 2, 3, 4, 5};
-  s.add_face(l, 3, 0);
-  const auto split = split_nonplanar_faces(s, 1e-9);
+  const auto split = split_nonplanar_faces(
+      one_face("l.off",
+               {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1 + 1e-7, 1 + 1e-7, 1e-7}, {1, 2, 0}, {0, 2, 0}}, 3),
+      1e-9);
   ASSERT_TRUE(split.has_value());
   ASSERT_EQ(split->face_count(), 4u);
   for (std::size_t f = 0; f < 4; ++f) {
@@ -229,16 +233,12 @@ TEST(Surface, NonPlanarFaceSplitsIntoItsBestShapedTriangulation) {
     EXPECT_GT(smallest, 44.9) << "triangle " << f;
   }
   // Above 96 corners, ear clipping: a 120-gon, every other corner raised, in 118 triangles.
-  Surface big;
-  big.source = "big.off";
-  std::vector<std::uint32_t> ring;
+  std::vector<Point> ring;
   for (int i = 0; i < 120; ++i) {
     const double t = 2 * 3.141592653589793 * i / 120;
-    big.add_point({std::cos(t), std::sin(t), i % 2 ? 1e-6 : 0.0}, 0, i);
-    ring.push_back(static_cast<std::uint32_t>(i));
+    ring.push_back({std::cos(t), std::sin(t), i % 2 ? 1e-6 : 0.0});
   }
-  big.add_face(ring, 1, 0);
-  const auto fan = split_nonplanar_faces(big, 1e-9);
+  const auto fan = split_nonplanar_faces(one_face("big.off", ring, 1), 1e-9);
   ASSERT_TRUE(fan.has_value());
   EXPECT_EQ(fan->face_count(), 118u);
 }
