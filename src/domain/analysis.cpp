@@ -3,6 +3,7 @@
 
 #include "domain/analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -133,6 +134,18 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
   return r;
 }
 
+std::string bent_right_angles_hint(const DomainReport& r) {
+  const bool near_right =
+      std::all_of(r.violations.begin(), r.violations.end(), [](const AngleRecord& v) {
+        return std::fabs(v.degrees - 90) < 1e-4 || std::fabs(v.degrees - 270) < 1e-4;
+      });
+  if (r.violations.empty() || !near_right) return {};
+  return "every violation is within 1e-4 deg of a right angle: if the input means right "
+         "angles, its coordinates are less precise than the planarity tolerance admits (the "
+         "vertices known to the tolerance times the domain's diameter); raise it "
+         "(--planarity-tolerance) to read them as right";
+}
+
 std::string render_text(const DomainReport& r) {
   std::ostringstream o;
   o << "domain " << (r.source.empty() ? "(unnamed)" : r.source) << "\n";
@@ -180,6 +193,7 @@ std::string render_text(const DomainReport& r) {
   if (!r.violations.empty()) {
     o << "  violations (" << r.violations.size() << "):\n";
     for (const AngleRecord& v : r.violations) o << "    " << describe(v) << "\n";
+    if (const std::string hint = bent_right_angles_hint(r); !hint.empty()) o << "    " << hint << "\n";
   }
   if (std::isfinite(r.feature.d))
     o << "  d (paper 2.1) = " << num(r.feature.d, "%.10g") << " = min distance "

@@ -60,6 +60,10 @@ struct DomainReport {
 
 DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const FeatureSize& fs);
 
+// When every violation lies within 1e-4 degrees of 90 or 270 (right angles bent beyond the
+// planarity tolerance's reading, domain/angles.hpp): what to do, in words; else empty.
+std::string bent_right_angles_hint(const DomainReport& r);
+
 // Multi-line human-readable summary, ending with a newline.
 std::string render_text(const DomainReport& r);
 nlohmann::json to_json(const DomainReport& r);

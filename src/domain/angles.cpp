@@ -46,27 +46,62 @@ double ray_cone_deg(const Vec& s, const Vec& r1, const Vec& r2) {
 }
 
 // Whether the angle at o between a and b is acute as the input means it: the exact sign
-// of the cosine is positive, and the cosine exceeds the planarity tolerance `tol` (the
-// relative tolerance that classifies imprecise input, domain/domain.hpp). A right angle
-// that rounding bent below 90° by less than that (a rotated box) is a right angle; the
-// cosine's floating-point error (a few ulps) is far below any useful tolerance.
-bool acute(const Point& o, const Point& a, const Point& b, double tol, std::size_t& tolerated) {
+// of the cosine is positive, and moving o, a and b by at most `delta` each (the positional
+// uncertainty the planarity tolerance admits, uncertainty() below) cannot be shown to make
+// it a right angle. The angle's gradient with respect to a is perpendicular to x = a - o
+// with length 1 / |x|, with respect to b likewise, and with respect to o minus their sum,
+// of length sqrt(1 / |x|^2 + 1 / |y|^2) at 90°; so to first order such moves open it by
+// delta (1 / |x| + 1 / |y| + sqrt(1 / |x|^2 + 1 / |y|^2)), and an angle whose complement
+// asin(cos) is at most that is the right angle rounding bent, counted in `tolerated`.
+// The decision is floating point on purpose: it classifies the input, the mesher never
+// sees it, and the cosine's error (a few ulps) is far below delta / |x|.
+bool acute(const Point& o, const Point& a, const Point& b, double delta, std::size_t& tolerated) {
   if (dot_sign(o, a, b) != Sign::Positive) return false;
   const Vec x = sub(a, o), y = sub(b, o);
-  if (dot(x, y) > tol * norm(x) * norm(y)) return true;
+  const double lx = norm(x), ly = norm(y);
+  const double cosine = std::min(1.0, dot(x, y) / (lx * ly));
+  const double opening = delta * (1 / lx + 1 / ly + std::hypot(1 / lx, 1 / ly));
+  if (std::asin(cosine) > opening) return true;
   ++tolerated;
   return false;
 }
 
-// The same for the dihedral angle along p-q between the half-planes through a and b.
-bool acute_dihedral(const Point& p, const Point& q, const Point& a, const Point& b, double tol,
-                    std::size_t& tolerated) {
+// The same for the dihedral angle along p-q between the half-planes through a and b. Its
+// gradient with respect to a is normal to the half-plane of a, of length 1 / h_a (h_a: the
+// distance from a to the line pq), with respect to b likewise; with respect to p it is
+// -(1 - t_a) times a's minus (1 - t_b) times b's, and with respect to q -t_a times a's
+// minus t_b times b's (t_a: the parameter of a's projection on p + t (q - p)), the four
+// summing to zero as a rigid translation changes nothing; at 90° a's and b's are
+// orthogonal, which gives the lengths below.
+bool acute_dihedral(const Point& p, const Point& q, const Point& a, const Point& b,
+                    double delta, std::size_t& tolerated) {
   if (dihedral_cos_sign(p, q, a, b) != Sign::Positive) return false;
-  const Vec u = sub(q, p);
-  const Vec x = cross(u, sub(a, p)), y = cross(u, sub(b, p));
-  if (dot(x, y) > tol * norm(x) * norm(y)) return true;
+  const Vec u = sub(q, p), wa = sub(a, p), wb = sub(b, p);
+  const Vec x = cross(u, wa), y = cross(u, wb);
+  const double uu = dot(u, u), lu = std::sqrt(uu), lx = norm(x), ly = norm(y);
+  const double cosine = std::min(1.0, dot(x, y) / (lx * ly));
+  const double ga = lu / lx, gb = lu / ly;  // 1 / h_a, 1 / h_b
+  const double ta = dot(wa, u) / uu, tb = dot(wb, u) / uu;
+  const double opening = delta * (ga + gb + std::hypot((1 - ta) * ga, (1 - tb) * gb) +
+                                  std::hypot(ta * ga, tb * gb));
+  if (std::asin(cosine) > opening) return true;
   ++tolerated;
   return false;
+}
+
+// The positional uncertainty of the input the planarity tolerance admits: a facet is
+// planar within tolerance when its vertices lie within tol times its diameter of a plane,
+// so a vertex of the domain is known to about tol times the domain's diameter (its
+// bounding box's diagonal).
+double uncertainty(const std::vector<Point>& pts, double tol) {
+  if (pts.empty()) return 0;
+  Point lo = pts[0], hi = pts[0];
+  for (const Point& q : pts)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], q[i]);
+      hi[i] = std::max(hi[i], q[i]);
+    }
+  return tol * norm(sub(hi, lo));
 }
 
 struct Corner {
@@ -76,7 +111,7 @@ struct Corner {
 class Checker {
  public:
   explicit Checker(const PlcDomain& dom)
-      : dom_(dom), pts_(dom.plc.points), tol_(dom.options.planarity_tolerance) {
+      : dom_(dom), pts_(dom.plc.points), delta_(uncertainty(dom.plc.points, dom.options.planarity_tolerance)) {
     corners_.resize(dom.facets.size());
     for (std::size_t f = 0; f < dom.facets.size(); ++f) {
       for (const FacetTri& t : dom.facets[f].tris)
@@ -171,7 +206,7 @@ class Checker {
         } else {
           r.degrees = angle_deg(sub(pts_[a], pts_[v]), sub(pts_[b], pts_[v]));
         }
-        record(std::move(r), acute(pts_[v], pts_[a], pts_[b], tol_, out_.tolerated));
+        record(std::move(r), acute(pts_[v], pts_[a], pts_[b], delta_, out_.tolerated));
       }
   }
 
@@ -187,8 +222,8 @@ class Checker {
         double deg = 180;
         for (const Corner& c : cs) {
           deg = std::min(deg, ray_cone_deg(sv, sub(pts_[c.x], pts_[v]), sub(pts_[c.y], pts_[v])));
-          violation = violation || acute(pts_[v], pts_[w], pts_[c.x], tol_, out_.tolerated) ||
-                      acute(pts_[v], pts_[w], pts_[c.y], tol_, out_.tolerated);
+          violation = violation || acute(pts_[v], pts_[w], pts_[c.x], delta_, out_.tolerated) ||
+                      acute(pts_[v], pts_[w], pts_[c.y], delta_, out_.tolerated);
         }
         AngleRecord r;
         r.kind = AngleKind::FacetSegment;
@@ -236,7 +271,7 @@ class Checker {
                             ray_cone_deg(b1, a1, a2), ray_cone_deg(b2, a1, a2)});
             for (std::uint32_t g : {a.x, a.y})
               for (std::uint32_t h : {b.x, b.y})
-                violation = violation || acute(pts_[v], pts_[g], pts_[h], tol_, out_.tolerated);
+                violation = violation || acute(pts_[v], pts_[g], pts_[h], delta_, out_.tolerated);
           }
         AngleRecord r;
         r.kind = AngleKind::FacetFacetVertex;
@@ -282,13 +317,13 @@ class Checker {
       r.degrees = theta;
       r.segments = {ends(s)};
       r.facets = {x.facet, y.facet};
-      record(std::move(r), acute_dihedral(p, q, pts_[x.apex], pts_[y.apex], tol_, out_.tolerated));
+      record(std::move(r), acute_dihedral(p, q, pts_[x.apex], pts_[y.apex], delta_, out_.tolerated));
     }
   }
 
   const PlcDomain& dom_;
   const std::vector<Point>& pts_;
-  const double tol_;
+  const double delta_;  // uncertainty() of the input
   std::vector<std::vector<std::pair<std::uint32_t, Corner>>> corners_;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, std::uint32_t>> sectors_;
   Admissibility out_;

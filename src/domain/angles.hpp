@@ -39,11 +39,13 @@
 // reported degrees are floating point (a report, not a decision). For a facet planar only
 // within tolerance, the cone is that of its triangles.
 // Input given in floating point bends right angles: a box rotated by a random rotation has
-// angles a few ulps below 90°. The planarity tolerance (PlcOptions::planarity_tolerance,
-// relative, 1e-9 by default, the one that accepts facets planar within rounding) also
-// classifies these: a positive sign whose cosine is at most the tolerance (an angle within
-// about tol radians of 90° or 270°) is the right angle the input means, counted in
-// Admissibility::tolerated. It classifies the input; the mesher never sees it.
+// angles a few ulps below 90°, and one printed with 9 significant digits a few 1e-9
+// radians. The planarity tolerance (PlcOptions::planarity_tolerance, relative, 1e-9 by
+// default, the one that accepts facets planar within rounding) also classifies these: it
+// admits vertices known to delta = tol times the domain's diameter, and an angle whose exact
+// cosine is positive but which moving its outer points by at most delta opens to 90° (or
+// 270°) is the right angle the input means, counted in Admissibility::tolerated (the bound
+// is in angles.cpp). It classifies the input; the mesher never sees it.
 #pragma once
 
 #include <array>
