@@ -124,6 +124,7 @@ TEST_F(Cli, PlanarityToleranceOptionAcceptsAFarPart) {
   const auto j = mesh_json(path("far.off") + " -o " + path("f") +
                            " --max-volume 0.01 --planarity-tolerance 1e-8");
   EXPECT_EQ(j.at("check"), "pass");
+  EXPECT_EQ(j.at("admissible"), true);  // its right angles, bent as much, read as right
   const Outcome c1 = run("check " + path("f") + " --domain " + path("far.off") +
                          " --planarity-tolerance 1e-8");
   EXPECT_EQ(c1.code, 0) << c1.out;
