@@ -258,10 +258,10 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // The whole mesh from the submeshes' tets, in place of M_o (par/assembly.hpp).
   par::Assembled assembled;
   if (distribute) {
-    par::Assembly a(vm, pieces.size() / sizeof(par::PieceTet));
-    for (par::WireReader r(pieces); !r.done();) a.add(par::get_piece(r));
-    std::vector<std::byte>().swap(pieces);
+    par::Assembly a(vm);
+    for (par::WireReader r(pieces); !r.done();) a.add(par::get_piece_view(r));
     assembled = a.finish(vm, d_steps);
+    std::vector<std::byte>().swap(pieces);
   }
   seconds += timer.lap("assemble");
   std::uint64_t committed = 0;

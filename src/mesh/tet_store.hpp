@@ -132,6 +132,19 @@ class TetStore {
     ++live_;
     return t;
   }
+  // n new live slots after the last one (no free slot is reused); returns the first. The
+  // caller writes their records (set_vertices, set_opposite) before anything reads them;
+  // distinct slots may be written from different threads.
+  TetId append(std::size_t n) {
+    if (n > max_slots_ || slots() > max_slots_ - n)
+      throw CapacityError("tet_store.capacity: " + std::to_string(slots() + n) +
+                          " tet slots is more than 32-bit ids allow (2^30 - 1); use a coarser "
+                          "size, or split the domain across ranks");
+    const auto t = static_cast<TetId>(slots());
+    data_.resize(data_.size() + kRecord * n);
+    live_ += n;
+    return t;
+  }
   void set_vertices(TetId t, VertexId a, VertexId b, VertexId c, VertexId d) {
     VertexId* p = &data_[record_offset(t)];
     p[0] = a;

@@ -2,6 +2,11 @@
 #include "par/assembly.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <system_error>
+#include <thread>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
@@ -61,11 +66,21 @@ Piece get_piece(WireReader& r) {
   return p;
 }
 
-Assembly::Assembly(const refine::VolumeMesh& m, std::size_t tets)
-    : n0_(m.dt.num_points()), points_(m.dt.points().begin(), m.dt.points().end()) {
-  st_.reserve(tets);
-  inside_.reserve(tets);
+PieceView::PieceView(const Piece& p)
+    : nv_(p.vertices.size()),
+      nt_(p.tets.size()),
+      v_(reinterpret_cast<const std::byte*>(p.vertices.data())),
+      t_(reinterpret_cast<const std::byte*>(p.tets.data())) {}
+
+PieceView get_piece_view(WireReader& r) {
+  PieceView v;
+  std::tie(v.nv_, v.v_) = r.get_vector_in_place<VertexRecord>();
+  std::tie(v.nt_, v.t_) = r.get_vector_in_place<PieceTet>();
+  return v;
 }
+
+Assembly::Assembly(const refine::VolumeMesh& m)
+    : n0_(m.dt.num_points()), points_(m.dt.points().begin(), m.dt.points().end()) {}
 
 VertexId* Assembly::fresh_slot(Gid g) {
   const auto m = made_vertex(g);
@@ -86,11 +101,16 @@ VertexId Assembly::vertex(Gid g) const {
   return v;
 }
 
-void Assembly::add(const Piece& p) {
-  vmap_.clear();
-  for (const VertexRecord& v : p.vertices) {
+void Assembly::add(const PieceView& p) {
+  Added& a = added_.emplace_back();
+  a.piece = p;
+  a.first = static_cast<TetId>(tets_);
+  tets_ += p.tet_count();
+  a.map.reserve(p.vertex_count());
+  for (std::size_t i = 0; i < p.vertex_count(); ++i) {
+    const VertexRecord v = p.vertex(i);
     if (v.gid < n0_) {
-      vmap_.push_back(static_cast<VertexId>(v.gid));
+      a.map.push_back(static_cast<VertexId>(v.gid));
       continue;
     }
     VertexId* at = fresh_slot(v.gid);
@@ -99,52 +119,104 @@ void Assembly::add(const Piece& p) {
       points_.push_back(v.p);
       fresh_tet_.push_back(kNoTet);
     }
-    vmap_.push_back(*at);
+    a.map.push_back(*at);
   }
+}
+
+void Assembly::write_tets(const Added& a, std::size_t begin, std::size_t end,
+                          std::vector<OpenFace>& open, std::vector<TetId>& deferred) {
+  const std::size_t n = a.piece.tet_count();
   const auto vertex = [&](std::uint32_t i) {
     if (i == kGhostVertex) return kGhostVertex;
-    if (i >= vmap_.size()) throw std::logic_error("assembly: a piece's tet names no vertex of it");
-    return vmap_[i];
+    if (i >= a.map.size()) throw std::logic_error("assembly: a piece's tet names no vertex of it");
+    return a.map[i];
   };
-  ids_.clear();
-  for (const PieceTet& x : p.tets) {
-    ids_.push_back(st_.create(vertex(x.v[0]), vertex(x.v[1]), vertex(x.v[2]), vertex(x.v[3])));
+  for (std::size_t j = begin; j < end; ++j) {
+    const PieceTet x = a.piece.tet(j);
+    const auto t = static_cast<TetId>(a.first + j);
+    st_.set_vertices(t, vertex(x.v[0]), vertex(x.v[1]), vertex(x.v[2]), vertex(x.v[3]));
     for (const std::uint32_t i : x.v)
-      if (i != kGhostVertex && vmap_[i] >= n0_) fresh_tet_[vmap_[i] - n0_] = ids_.back();
-    if (inside_.size() <= ids_.back()) inside_.resize(ids_.back() + 1, 0);
-    inside_[ids_.back()] = x.inside & 1;
-    if ((x.inside & 2) != 0) out_.deferred.push_back(ids_.back());
-  }
-  for (std::size_t j = 0; j < p.tets.size(); ++j)
+      if (i != kGhostVertex && a.map[i] >= n0_)  // any tet holding it will do
+        std::atomic_ref<TetId>(fresh_tet_[a.map[i] - n0_]).store(t, std::memory_order_relaxed);
+    inside_[t] = x.inside & 1;
+    if ((x.inside & 2) != 0) deferred.push_back(t);
     for (int f = 0; f < 4; ++f) {
-      const std::uint32_t a = p.tets[j].across[static_cast<std::size_t>(f)];
-      if (a != kAcrossProxy) {
-        st_.set_opposite(half_face(ids_[j], f), half_face(ids_.at(a >> 2), static_cast<int>(a & 3)));
+      const std::uint32_t across = x.across[static_cast<std::size_t>(f)];
+      if (across != kAcrossProxy) {
+        if ((across >> 2) >= n) throw std::logic_error("assembly: a piece's tet names no tet of it");
+        st_.set_opposite(half_face(t, f), 4 * a.first + across);
         continue;
       }
       const auto& fv = tables::kFaceVertex[f];
-      OpenFace o{{st_.vertex(ids_[j], fv[0]), st_.vertex(ids_[j], fv[1]), st_.vertex(ids_[j], fv[2])},
-                 half_face(ids_[j], f)};
+      OpenFace o{{st_.vertex(t, fv[0]), st_.vertex(t, fv[1]), st_.vertex(t, fv[2])}, half_face(t, f)};
       std::sort(o.key.begin(), o.key.end());
-      open_.push_back(o);
+      open.push_back(o);
     }
+  }
 }
 
 Assembled Assembly::finish(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) {
   if (m.dt.num_points() != n0_) throw std::logic_error("assembly: the mesh changed meanwhile");
-  // Faces between pieces: each exactly twice.
-  std::sort(open_.begin(), open_.end(),
-            [](const OpenFace& a, const OpenFace& b) { return a.key < b.key; });
-  for (std::size_t i = 0; i < open_.size(); i += 2) {
-    if (i + 1 == open_.size() || open_[i].key != open_[i + 1].key ||
-        (i + 2 < open_.size() && open_[i + 2].key == open_[i].key))
-      throw std::logic_error("assembly: a face between submeshes (vertices " +
-                             std::to_string(open_[i].key[0]) + ", " +
-                             std::to_string(open_[i].key[1]) + ", " +
-                             std::to_string(open_[i].key[2]) + ") is not shared by two tets");
-    st_.link(open_[i].h, open_[i + 1].h);
+  st_.append(tets_);
+  inside_.assign(tets_, 0);
+  // The tets, in blocks taken by every core in turn; each worker keeps its own lists.
+  struct Block {
+    std::size_t piece, begin, end;
+  };
+  constexpr std::size_t kBlock = 1 << 16;
+  std::vector<Block> blocks;
+  for (std::size_t p = 0; p < added_.size(); ++p)
+    for (std::size_t b = 0; b < added_[p].piece.tet_count(); b += kBlock)
+      blocks.push_back({p, b, std::min(added_[p].piece.tet_count(), b + kBlock)});
+  const std::size_t workers =
+      std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, std::max<std::size_t>(1, blocks.size()));
+  std::vector<std::vector<OpenFace>> open(workers);
+  std::vector<std::vector<TetId>> deferred(workers);
+  std::vector<std::exception_ptr> errors(workers);
+  std::atomic<std::size_t> next{0};
+  const auto work = [&](std::size_t w) {
+    try {
+      for (std::size_t b; (b = next.fetch_add(1)) < blocks.size();)
+        write_tets(added_[blocks[b].piece], blocks[b].begin, blocks[b].end, open[w], deferred[w]);
+    } catch (...) {
+      errors[w] = std::current_exception();
+      next = blocks.size();
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t w = 1; w < workers; ++w) {
+      try {
+        pool.emplace_back(work, w);
+      } catch (const std::system_error&) {
+        break;  // no thread to be had: the others take its blocks
+      }
+    }
+    work(0);
   }
-  std::vector<OpenFace>().swap(open_);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  std::vector<OpenFace> faces;
+  for (std::size_t w = 0; w < workers; ++w) {
+    faces.insert(faces.end(), open[w].begin(), open[w].end());
+    std::vector<OpenFace>().swap(open[w]);
+    out_.deferred.insert(out_.deferred.end(), deferred[w].begin(), deferred[w].end());
+  }
+  std::sort(out_.deferred.begin(), out_.deferred.end());  // slot order, whatever the threads
+  // Faces between pieces: each exactly twice.
+  std::sort(faces.begin(), faces.end(),
+            [](const OpenFace& a, const OpenFace& b) { return a.key < b.key; });
+  for (std::size_t i = 0; i < faces.size(); i += 2) {
+    if (i + 1 == faces.size() || faces[i].key != faces[i + 1].key ||
+        (i + 2 < faces.size() && faces[i + 2].key == faces[i].key))
+      throw std::logic_error("assembly: a face between submeshes (vertices " +
+                             std::to_string(faces[i].key[0]) + ", " +
+                             std::to_string(faces[i].key[1]) + ", " +
+                             std::to_string(faces[i].key[2]) + ") is not shared by two tets");
+    st_.link(faces[i].h, faces[i + 1].h);
+  }
+  std::vector<OpenFace>().swap(faces);
+  std::vector<Added>().swap(added_);
   out_.added = points_.size() - n0_;
   m.dt.adopt(std::move(points_), std::move(st_));
   m.inside = std::move(inside_);
@@ -226,10 +298,8 @@ std::size_t Assembly::change_d(refine::VolumeMesh& m, std::span<const SurfaceSte
 
 Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,
                    std::span<const SurfaceStep> steps) {
-  std::size_t tets = 0;
-  for (const Piece& p : pieces) tets += p.tets.size();
-  Assembly a(m, tets);
-  for (const Piece& p : pieces) a.add(p);
+  Assembly a(m);
+  for (const Piece& p : pieces) a.add(PieceView(p));
   return a.finish(m, steps);
 }
 

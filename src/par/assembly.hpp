@@ -35,6 +35,7 @@
 #pragma once
 
 #include <array>
+#include <cstring>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -70,6 +71,31 @@ Piece piece_of(const Submesh& s);
 void put_piece(WireWriter& w, const Piece& p);
 Piece get_piece(WireReader& r);
 
+// A piece read where it lies: in a gathered message (get_piece_view, without copying it)
+// or in a Piece. What it points at must outlive it.
+class PieceView {
+ public:
+  PieceView() = default;
+  explicit PieceView(const Piece& p);
+  std::size_t vertex_count() const { return nv_; }
+  std::size_t tet_count() const { return nt_; }
+  VertexRecord vertex(std::size_t i) const { return read<VertexRecord>(v_, i); }
+  PieceTet tet(std::size_t i) const { return read<PieceTet>(t_, i); }
+
+ private:
+  friend PieceView get_piece_view(WireReader& r);
+  template <class T>
+  static T read(const std::byte* at, std::size_t i) {
+    T x;
+    std::memcpy(&x, at + i * sizeof(T), sizeof(T));
+    return x;
+  }
+  std::size_t nv_ = 0, nt_ = 0;
+  const std::byte* v_ = nullptr;
+  const std::byte* t_ = nullptr;
+};
+PieceView get_piece_view(WireReader& r);
+
 struct Assembled {
   std::size_t added = 0;        // vertices appended
   std::vector<TetId> deferred;  // the tets marked deferred, by their new ids
@@ -89,36 +115,47 @@ struct Assembled {
 Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,
                    std::span<const SurfaceStep> steps = {});
 
-// The same, a piece at a time (rank 0 reads the gathered pieces one by one, so that they
-// are never all held twice): Assembly a(m, tets); a.add(piece)...; a.finish(m). `tets`
-// only reserves.
+// The same, a piece at a time (rank 0 reads the gathered pieces where they lie, so that
+// they are never held twice): Assembly a(m); a.add(piece)...; a.finish(m). add() numbers
+// the piece's vertices (in piece order, so the ids do not depend on threads) and gives its
+// tets the next slots; finish() writes the tets into those slots on every core (a tet's
+// neighbours within its piece are known by their index, so each tet is written alone),
+// then glues the faces between pieces. The pieces must stay alive until finish().
 class Assembly {
  public:
-  Assembly(const refine::VolumeMesh& m, std::size_t tets);
-  void add(const Piece& p);
+  explicit Assembly(const refine::VolumeMesh& m);
+  void add(const PieceView& p);
   // m: the mesh given to the constructor.
   Assembled finish(refine::VolumeMesh& m, std::span<const SurfaceStep> steps = {});
 
  private:
+  struct Added {  // a piece given to add()
+    PieceView piece;
+    TetId first = 0;            // the slot of its tet 0
+    std::vector<VertexId> map;  // its vertices' ids
+  };
+  struct OpenFace {  // a face towards another piece: its vertex ids, sorted
+    std::array<VertexId, 3> key;
+    HalfFace h;
+  };
+  // Writes tets [begin, end) of piece `a` into their slots; faces towards other pieces go
+  // to `open`, deferred tets to `deferred`. Throws std::logic_error on a malformed piece.
+  void write_tets(const Added& a, std::size_t begin, std::size_t end, std::vector<OpenFace>& open,
+                  std::vector<TetId>& deferred);
   VertexId vertex(Gid g) const;
   // add(): where the id of vertex g, made in the phase, is kept (by maker and serial,
   // par/submesh.hpp made_vertex); kNoVertex there until a piece brings it.
   VertexId* fresh_slot(Gid g);
   // Returns how many elements are encroached around the steps' points (Assembled).
   std::size_t change_d(refine::VolumeMesh& m, std::span<const SurfaceStep> steps) const;
-  struct OpenFace {  // a face towards another piece: its vertex ids, sorted
-    std::array<VertexId, 3> key;
-    HalfFace h;
-  };
   std::size_t n0_;
   std::vector<Point> points_;
   std::vector<std::vector<VertexId>> fresh_;  // vertices made in the parallel phase
   std::vector<TetId> fresh_tet_;             // per vertex made: a tet holding it
+  std::vector<Added> added_;
+  std::size_t tets_ = 0;  // slots given so far
   TetStore st_;
   std::vector<std::uint8_t> inside_;
-  std::vector<OpenFace> open_;
-  std::vector<VertexId> vmap_;  // add(): the piece's vertices
-  std::vector<TetId> ids_;      // add(): the piece's tets
   Assembled out_;
 };
 

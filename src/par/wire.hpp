@@ -10,6 +10,7 @@
 #include <span>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "par/transport.hpp"
@@ -60,6 +61,17 @@ class WireReader {
     if (n > 0) std::memcpy(v.data(), b_.data() + pos_, v.size() * sizeof(T));
     pos_ += v.size() * sizeof(T);
     return v;
+  }
+  // A vector's bytes left where they are: its element count and where its elements start
+  // (unaligned: read each with memcpy). The span must outlive what reads them.
+  template <class T>
+  std::pair<std::size_t, const std::byte*> get_vector_in_place() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto n = get<std::uint64_t>();
+    if (n > (b_.size() - pos_) / sizeof(T)) throw std::logic_error("wire: a vector too long");
+    const std::byte* at = b_.data() + pos_;
+    pos_ += static_cast<std::size_t>(n) * sizeof(T);
+    return {static_cast<std::size_t>(n), at};
   }
   bool done() const { return pos_ == b_.size(); }
 
