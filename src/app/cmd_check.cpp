@@ -82,7 +82,9 @@ int run_check(const CheckArgs& args) {
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
   opt.threads = args.threads;
-  set_check_tolerances(args.planarity_tolerance, opt);
+  set_check_tolerances(args.planarity_tolerance,
+                       domain ? std::span<const Point>(domain->points) : std::span<const Point>(),
+                       opt);
   if (progress.enabled())
     opt.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
   const bool every_finding = args.explain || args.vtu;

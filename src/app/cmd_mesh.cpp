@@ -328,7 +328,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     check::Options co;
     co.ratio_bound = opt.ratio;
     co.threads = args.threads;
-    set_check_tolerances(args.planarity_tolerance, co);
+    set_check_tolerances(args.planarity_tolerance, an.domain.plc.points, co);
     if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };

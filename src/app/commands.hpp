@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "app/summary.hpp"
 #include "check/check.hpp"
 #include "domain/domain.hpp"
+#include "io/precision.hpp"
 #include "mesh/mesh_data.hpp"
 #include "mesh/plc.hpp"
 #include "refine/seq_refinement.hpp"
@@ -75,8 +77,13 @@ inline domain::PlcOptions plc_options(const std::optional<double>& planarity) {
 // ones pdr mesh puts on the plane of three of them within 7T: surface/chart.hpp); for
 // exactly planar facets and segments, within max(2T, the check's default) when T is
 // given, else the check's default (rounding only).
-inline void set_check_tolerances(const std::optional<double>& planarity, check::Options& o) {
-  o.inexact_facet_tolerance = 8 * plc_options(planarity).planarity_tolerance;
+// The coordinates' uncertainty (io/precision.hpp) is the domain's, as the analysis infers
+// it from `points` (none under --planarity-tolerance 0).
+inline void set_check_tolerances(const std::optional<double>& planarity,
+                                 std::span<const Point> points, check::Options& o) {
+  const double t = plc_options(planarity).planarity_tolerance;
+  o.inexact_facet_tolerance = 8 * t;
+  o.coordinate_uncertainty = io::planarity_tolerance_of(points, t).uncertainty;
   if (planarity) o.relative_tolerance = std::max(o.relative_tolerance, 2 * *planarity);
 }
 int run_mesh(const MeshArgs& args);

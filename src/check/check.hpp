@@ -95,6 +95,12 @@ struct Options {
   // tolerance (1e-9). Such a facet's vertices lie within T diameters of that plane, and
   // pdr mesh puts new vertices on the plane of three of them, within 7T (surface/chart.hpp).
   double inexact_facet_tolerance = 8e-9;
+  // The uncertainty of the domain's coordinates when they are written with fewer digits
+  // (io/precision.hpp; 0: none): a facet planar only within tolerance then has its
+  // vertices within max(T diameters, 4 u) of its least-squares plane, and the new ones
+  // within 7 times that, so vertices within max(inexact_facet_tolerance * diameter, 32 u)
+  // count as on it.
+  double coordinate_uncertainty = 0;
   // Pieces of the domain that bound no region (a facet, or a part of one, with voids or the
   // outside on both sides, and the segments only such pieces hold): TetGen drops them, and
   // so does pdr's domain analysis (domain::PlcDomain::dropped). The mesh need not hold

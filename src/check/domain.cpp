@@ -130,9 +130,14 @@ SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const DomainMap& m, con
 
 using SegmentIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t>;
 
+// Options::coordinate_uncertainty u: a facet planar within 4u (pdr mesh's classification,
+// io/precision.hpp) has its new vertices within 7 * 4u of its least-squares plane.
+constexpr double kUncertaintyShare = 32;
+
 FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const DomainMap& m,
                    const SegmentIndex& seg_index, const MeshView& mesh, const PointGrid& grid,
-                   double tol, double inexact_tol, const std::vector<std::uint8_t>& dropped_vertex) {
+                   double tol, double inexact_tol, double uncertainty,
+                   const std::vector<std::uint8_t>& dropped_vertex) {
   FacetMap fm;
   // The facet's vertices: equal to their mesh vertices, which a mesher may leave out where
   // they lie only on dropped pieces (Options::dropped_vertices).
@@ -186,7 +191,8 @@ FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const Dom
     return signs::orient3d(a, b, c, v) == Sign::Zero;
   });
   const double t = exact ? tol : inexact_tol;
-  const double dist = t > 0 ? t * diam + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0,
+  const double admitted = exact ? t * diam : std::max(t * diam, kUncertaintyShare * uncertainty);
+  const double dist = t > 0 ? admitted + 4 * kEps * std::max(max_abs(fbox.lo), max_abs(fbox.hi)) : 0,
                nn = norm(n);
   FittedPlane fit;
   if (!exact) {
@@ -404,7 +410,8 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
     if (v < dropped_vertex.size()) dropped_vertex[v] = 1;
   for (const PlcFacet& f : domain.facets)
     m.facets.push_back(map_facet(f, domain.points, m, seg_index, mesh, grid, tol,
-                                 options.inexact_facet_tolerance, dropped_vertex));
+                                 options.inexact_facet_tolerance,
+                                 options.coordinate_uncertainty, dropped_vertex));
   mark_dropped(m, domain.points, mesh, options);
   assign_faces(m, mesh, topo);
   return m;

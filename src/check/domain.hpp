@@ -9,7 +9,8 @@
 // planar facet F (all its vertices on the plane of a spanning triple a, b, c) if it is
 // exactly coplanar with a, b, c, or if dist(p, plane abc) <= tol * diam(F) + r; on a facet
 // planar only within tolerance if dist(p, P) <= tol' * diam(F) + r, P the least-squares
-// plane of F's distinct vertices (diam: the diagonal of F's bounding box), tol =
+// plane of F's distinct vertices (diam: the diagonal of F's bounding box; for a domain
+// written with fewer digits, max(tol' diam(F), 32 u), u = Options::coordinate_uncertainty), tol =
 // Options::relative_tolerance, tol' = Options::inexact_facet_tolerance, r = 4 ulps of the
 // largest coordinate of AB (of F's box): the rounding of a vertex computed there, which
 // far from the origin exceeds tol |AB| (tol = 0: exact only, no r either). A facet planar

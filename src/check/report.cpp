@@ -6,6 +6,7 @@
 //     "mesh": {"points": n, "tets": n, "boundary_faces": n}, "domain": bool,
 //     "options": {"ratio_bound": x|null, "min_edge": x|null, "max_reported": n,
 //                 "threads": n, "relative_tolerance": x, "inexact_facet_tolerance": x,
+//                 "coordinate_uncertainty": x,
 //                 "check_overlap": bool},
 //     "checks": [ {"id", "invariant", "status": "pass"|"warn"|"fail"|"skipped", "reason",
 //                  "checked", "violations", "counts": {name: n}, "values": {name: x},
@@ -110,6 +111,7 @@ nlohmann::json to_json(const Report& report, bool with_timing) {
                   {"threads", o.threads},
                   {"relative_tolerance", o.relative_tolerance},
                   {"inexact_facet_tolerance", o.inexact_facet_tolerance},
+                  {"coordinate_uncertainty", o.coordinate_uncertainty},
                   {"check_overlap", o.check_overlap}};
   json checks = json::array();
   for (const CheckResult& r : report.checks) {

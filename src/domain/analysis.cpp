@@ -122,6 +122,7 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
     first = false;
   }
   r.planarity_tolerance = dom.options.planarity_tolerance;
+  r.tolerance = dom.tolerance;
   for (std::uint32_t f : dom.tolerance_facets)
     r.tolerance_facets.push_back({f, plc.facets[f].line, dom.facets[f].plane.max_deviation});
   r.admissible = adm.admissible;
@@ -173,6 +174,9 @@ std::string render_text(const DomainReport& r) {
   } else {
     o << "  planarity: " << r.tolerance_facets.size()
       << " facet(s) planar only within the relative tolerance " << num(r.planarity_tolerance)
+      << (r.tolerance.uncertainty > 0
+              ? " or the coordinates' rounding (" + num(r.tolerance.uncertainty, "%.3g") + ")"
+              : std::string())
       << ":\n";
     for (const ToleranceFacet& t : r.tolerance_facets)
       o << "    facet " << t.facet << at_line(t.line) << ": deviation " << num(t.deviation, "%.3g")
@@ -224,7 +228,14 @@ nlohmann::json to_json(const DomainReport& r) {
   json tol = json::array();
   for (const ToleranceFacet& t : r.tolerance_facets)
     tol.push_back({{"facet", t.facet}, {"line", t.line}, {"deviation", t.deviation}});
-  j["planarity"] = {{"tolerance", r.planarity_tolerance}, {"tolerance_facets", tol}};
+  // The coordinates' precision as inferred (io/precision.hpp): their most significant
+  // digits, whether they are all floats, and how far rounding may have moved a vertex
+  // (0: exact, or full double precision).
+  j["planarity"] = {{"tolerance", r.planarity_tolerance},
+                    {"coordinate_digits", r.tolerance.digits},
+                    {"coordinate_float32", r.tolerance.float32},
+                    {"coordinate_uncertainty", r.tolerance.uncertainty},
+                    {"tolerance_facets", tol}};
   json stats = json::object();
   for (int k = 0; k < angle_kinds; ++k) {
     const AngleStats& s = r.angle_stats[k];

@@ -49,6 +49,7 @@ struct DomainReport {
   std::size_t volume_holes = 0, facet_holes = 0, regions = 0;
   Point bbox_lo{}, bbox_hi{};           // of the boundary vertices
   double planarity_tolerance = 0;
+  io::PlanarityTolerance tolerance;     // with the coordinates' inferred precision
   std::vector<ToleranceFacet> tolerance_facets;  // accepted as planar within tolerance
   bool admissible = true;
   std::size_t right_within_tolerance = 0;  // angle tests read as 90° or 270° (angles.hpp)

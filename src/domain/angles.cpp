@@ -92,8 +92,9 @@ bool acute_dihedral(const Point& p, const Point& q, const Point& a, const Point&
 // The positional uncertainty of the input the planarity tolerance admits: a facet is
 // planar within tolerance when its vertices lie within tol times its diameter of a plane,
 // so a vertex of the domain is known to about tol times the domain's diameter (its
-// bounding box's diagonal).
-double uncertainty(const std::vector<Point>& pts, double tol) {
+// bounding box's diagonal), or to the uncertainty of coordinates written with fewer
+// digits (io/precision.hpp), whichever is more.
+double uncertainty(const std::vector<Point>& pts, const io::PlanarityTolerance& t) {
   if (pts.empty()) return 0;
   Point lo = pts[0], hi = pts[0];
   for (const Point& q : pts)
@@ -101,7 +102,7 @@ double uncertainty(const std::vector<Point>& pts, double tol) {
       lo[i] = std::min(lo[i], q[i]);
       hi[i] = std::max(hi[i], q[i]);
     }
-  return tol * norm(sub(hi, lo));
+  return std::max(t.relative * norm(sub(hi, lo)), t.uncertainty);
 }
 
 struct Corner {
@@ -111,7 +112,7 @@ struct Corner {
 class Checker {
  public:
   explicit Checker(const PlcDomain& dom)
-      : dom_(dom), pts_(dom.plc.points), delta_(uncertainty(dom.plc.points, dom.options.planarity_tolerance)) {
+      : dom_(dom), pts_(dom.plc.points), delta_(uncertainty(dom.plc.points, dom.tolerance)) {
     corners_.resize(dom.facets.size());
     for (std::size_t f = 0; f < dom.facets.size(); ++f) {
       for (const FacetTri& t : dom.facets[f].tris)

@@ -60,7 +60,7 @@ std::vector<std::uint32_t> merged(const std::vector<std::uint32_t>& a,
 
 void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
   const Plc& plc = dom.plc;
-  const double tol = dom.options.planarity_tolerance;
+  const io::PlanarityTolerance& tol = dom.tolerance;
   const std::size_t n = polys.size();
   std::vector<std::vector<std::uint32_t>> verts(n);
   for (std::size_t f = 0; f < n; ++f) {
@@ -74,7 +74,11 @@ void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
     if (fit.status == PlaneStatus::NotPlanar)
       here("planar facet: " + vertex_name(plc, fit.worst) + " lies " +
            number(fit.plane.max_deviation) +
-           " facet diameters off the best-fit plane of this facet (tolerance " + number(tol) +
+           " facet diameters off the best-fit plane of this facet (tolerance " +
+           number(tol.relative) +
+           (tol.uncertainty > 0 ? ", or " + number(tol.admitted(0) / fit.plane.diameter) +
+                                      " for the rounding of the coordinates"
+                                : std::string()) +
            "); fix the coordinates, split the facet into planar facets, or raise the "
            "planarity tolerance (pdr mesh --planarity-tolerance)");
     DomainFacet& F = dom.facets[f];

@@ -40,13 +40,15 @@
 #include <vector>
 
 #include "domain/plane.hpp"
+#include "io/precision.hpp"
 #include "mesh/plc.hpp"
 
 namespace pdr::domain {
 
 // Parameters of the domain analysis (docs/design.md §14: one small struct, by value).
 struct PlcOptions {
-  // Relative planarity tolerance (domain/plane.hpp). Classification only.
+  // Relative planarity tolerance (domain/plane.hpp). Classification only; 0: exact
+  // classification, and no uncertainty of the coordinates inferred (io/precision.hpp).
   double planarity_tolerance = 1e-9;
 };
 
@@ -97,6 +99,9 @@ struct DomainSegment {
 struct PlcDomain {
   Plc plc;                                           // the input, as given
   PlcOptions options;
+  // The planarity classification: options.planarity_tolerance with the uncertainty of the
+  // coordinates inferred from their values (io/precision.hpp; none when the tolerance is 0).
+  io::PlanarityTolerance tolerance;
   std::vector<DomainFacet> facets;                   // parallel to plc.facets
   std::vector<DomainSegment> segments;               // sorted by (a, b)
   std::vector<std::vector<std::uint32_t>> vertex_segments;  // per vertex, sorted

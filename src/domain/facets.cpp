@@ -69,7 +69,7 @@ void triangulate_face(const FacetPolys& fp, std::size_t f, PlcDomain& dom) {
   for (std::size_t h = 0; h < facet.holes.size(); ++h) {
     const std::string which = "facet hole point " + std::to_string(h + 1) + " of this facet";
     const double dev = relative_deviation(F.plane, facet.holes[h]);
-    if (!(dev <= tol))
+    if (!(dev * F.plane.diameter <= dom.tolerance.admitted(F.plane.diameter)))
       here("facet hole in plane: " + which + " lies " + number(dev) +
            " facet diameters off the facet's plane (tolerance " + number(tol) +
            "); move it into the facet");

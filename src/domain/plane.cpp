@@ -73,7 +73,7 @@ double relative_deviation(const FacetPlane& plane, const Point& p) {
 }
 
 PlaneFit fit_facet_plane(const std::vector<Point>& pts, const std::vector<std::uint32_t>& verts,
-                         double tolerance) {
+                         const io::PlanarityTolerance& tolerance) {
   PlaneFit fit;
   FacetPlane& pl = fit.plane;
   Point lo = pts[verts[0]], hi = lo;
@@ -136,7 +136,8 @@ PlaneFit fit_facet_plane(const std::vector<Point>& pts, const std::vector<std::u
       pl.max_deviation = dev;
       fit.worst = v;
     }
-  if (!(pl.max_deviation <= tolerance)) fit.status = PlaneStatus::NotPlanar;
+  if (!(pl.max_deviation * pl.diameter <= tolerance.admitted(pl.diameter)))
+    fit.status = PlaneStatus::NotPlanar;
   return fit;
 }
 

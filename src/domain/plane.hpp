@@ -9,7 +9,9 @@
 //   - planar within tolerance: otherwise, when every vertex lies within
 //     tol * diameter of the least-squares plane through the facet's vertices, where
 //     diameter is the diagonal of the facet's bounding box (at most sqrt(3) times the true
-//     diameter) and tol is PlcOptions::planarity_tolerance (default 1e-9, like TetGen -T);
+//     diameter) and tol is PlcOptions::planarity_tolerance (default 1e-9, like TetGen -T),
+//     or within four times the uncertainty of coordinates written with fewer digits
+//     (io/precision.hpp: a 7-digit file's small faces);
 //   - not planar: anything else (an input error).
 //
 // The plane "as the kernel sees it" is the defining triple: three non-collinear input
@@ -28,6 +30,7 @@
 
 #include "domain/exact.hpp"
 #include "geom/point.hpp"
+#include "io/precision.hpp"
 
 namespace pdr::domain {
 
@@ -51,7 +54,7 @@ struct PlaneFit {
 
 // Precondition: verts holds at least one id, all distinct points.
 PlaneFit fit_facet_plane(const std::vector<Point>& pts, const std::vector<std::uint32_t>& verts,
-                         double tolerance);
+                         const io::PlanarityTolerance& tolerance);
 
 // Distance of p to the fitted plane, relative to the facet's diameter.
 double relative_deviation(const FacetPlane& plane, const Point& p);

@@ -84,10 +84,12 @@ bool same_facet(const Surface& s, const SurfaceTopology& t, std::size_t f, std::
 // triangles of a planar quad in a rotated file: their fourth corners are a few ulps off each
 // other's planes). Greedy, in face order: a region grows across edges into neighbouring
 // regions with the same marker, not folded onto it, while every vertex of the union lies
-// within kMergeShare * tolerance * (the union's bounding-box diagonal) of the plane of the
-// seed face's defining triple. The share leaves the domain's least-squares test
-// (domain/plane.hpp), which judges the merged facet with the full tolerance, a margin.
-constexpr double kMergeShare = 0.125;
+// within kMergeShare * tolerance * (the union's bounding-box diagonal), or twice the
+// coordinates' uncertainty (io/precision.hpp), of the plane of the seed face's defining
+// triple. The shares leave the domain's least-squares test (domain/plane.hpp), which
+// judges the merged facet with the full tolerance (and four times the uncertainty), a
+// margin.
+constexpr double kMergeShare = 0.125, kMergeUncertainty = 2;
 
 class NearPlane {
  public:
@@ -104,7 +106,7 @@ class NearPlane {
   }
   // Adds the vertices when the union stays within the tolerance; false (nothing added)
   // otherwise.
-  bool add(std::span<const std::uint32_t> verts, double tolerance) {
+  bool add(std::span<const std::uint32_t> verts, const PlanarityTolerance& tolerance) {
     Point lo = lo_, hi = hi_;
     double dev = max_dev_;
     for (std::uint32_t v : verts) {
@@ -116,7 +118,9 @@ class NearPlane {
     const double diam = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
                                   (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    if (!(dev <= kMergeShare * tolerance * diam)) return false;
+    if (!(dev <= std::max(kMergeShare * tolerance.relative * diam,
+                          kMergeUncertainty * tolerance.uncertainty)))
+      return false;
     lo_ = lo, hi_ = hi, max_dev_ = dev;
     return true;
   }
@@ -135,8 +139,8 @@ bool unfolded(const Surface& s, const SurfaceTopology& t, std::size_t f, std::si
   return sf != Sign::Zero && sf == polygon_sign(t, t.face(s, g), axis);
 }
 
-void merge_within_tolerance(const Surface& s, const SurfaceTopology& t, double tolerance,
-                            UnionFind& uf) {
+void merge_within_tolerance(const Surface& s, const SurfaceTopology& t,
+                            const PlanarityTolerance& tolerance, UnionFind& uf) {
   const std::size_t nf = s.face_count();
   std::vector<std::vector<std::uint32_t>> members(nf);
   for (std::uint32_t f = 0; f < nf; ++f) members[uf.find(f)].push_back(f);
@@ -386,7 +390,8 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
     throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
                                   "closed surface of triangles or polygons");
   if (const auto once = without_repeated_faces(s)) return surface_to_plc(*once, planarity_tolerance);
-  if (const auto split = split_nonplanar_faces(s, planarity_tolerance))
+  const PlanarityTolerance tolerance = planarity_tolerance_of(s.points, planarity_tolerance);
+  if (const auto split = split_nonplanar_faces(s, tolerance))
     return surface_to_plc(*split, planarity_tolerance);
   const SurfaceTopology t = build_topology(s);
   const std::size_t nf = s.face_count();
@@ -400,7 +405,7 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
         uf.join(static_cast<std::uint32_t>(f), g);
     }
   }
-  merge_within_tolerance(s, t, planarity_tolerance, uf);
+  merge_within_tolerance(s, t, tolerance, uf);
   std::vector<Region> regions;
   std::vector<std::uint32_t> region_of(nf);
   for (std::uint32_t f = 0; f < nf; ++f) {

@@ -5,9 +5,11 @@
 //
 // How much a face is off its plane is a tolerance question (it classifies input and steers
 // nothing later): the largest distance of a corner to the plane through the corners'
-// centroid with the Newell normal, relative to the face's bounding-box diagonal, against
-// kSplitShare * tolerance. A face left whole keeps a margin for the domain's least-squares
-// test (domain/plane.hpp), which judges each facet with the full tolerance.
+// centroid with the Newell normal, against kSplitShare * tolerance * (the face's
+// bounding-box diagonal) or twice the coordinates' uncertainty (io/precision.hpp),
+// whichever is more. A face left whole keeps a margin for the domain's least-squares test
+// (domain/plane.hpp), which judges each facet with the full tolerance (and four times the
+// uncertainty).
 //
 // The triangles are decided exactly (orient2d on the input doubles), in the projection
 // that drops the axis of the face's Newell normal's largest component. A quad is split
@@ -30,7 +32,7 @@ namespace pdr::io {
 
 namespace {
 
-constexpr double kSplitShare = 0.5;
+constexpr double kSplitShare = 0.5, kSplitUncertainty = 2;
 
 Point newell_normal(const Surface& s, std::span<const std::uint32_t> c) {
   Point n{0, 0, 0};
@@ -47,7 +49,7 @@ Point newell_normal(const Surface& s, std::span<const std::uint32_t> c) {
 // plane through its centroid with the Newell normal n (a face with a zero normal is left to
 // step 2, which names what is wrong with it).
 bool planar_enough(const Surface& s, std::span<const std::uint32_t> c, const Point& n,
-                   double tolerance) {
+                   const PlanarityTolerance& tolerance) {
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if (!(len > 0)) return true;
   Point centroid{0, 0, 0}, lo = s.points[c[0]], hi = s.points[c[0]];
@@ -65,7 +67,8 @@ bool planar_enough(const Surface& s, std::span<const std::uint32_t> c, const Poi
   }
   const double diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                                 (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  return dev <= kSplitShare * tolerance * diag;
+  return dev <= std::max(kSplitShare * tolerance.relative * diag,
+                         kSplitUncertainty * tolerance.uncertainty);
 }
 
 double dist2(const Point& a, const Point& b) {
@@ -271,7 +274,7 @@ std::optional<std::vector<std::array<std::size_t, 3>>> triangles(
 
 }  // namespace
 
-std::optional<Surface> split_nonplanar_faces(const Surface& s, double tolerance) {
+std::optional<Surface> split_nonplanar_faces(const Surface& s, const PlanarityTolerance& tolerance) {
   for (const Point& p : s.points)  // step 1 names a coordinate that is not finite
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return std::nullopt;
   const std::size_t nf = s.face_count();

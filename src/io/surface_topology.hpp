@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "io/precision.hpp"
 #include "io/surface.hpp"
 
 namespace pdr::io {
@@ -35,7 +36,7 @@ struct SurfaceTopology {
 
 // Step 0b of surface.hpp (surface_split.cpp): the surface with its faces that are not
 // planar within the tolerance split into triangles; nullopt when no face is.
-std::optional<Surface> split_nonplanar_faces(const Surface& s, double tolerance);
+std::optional<Surface> split_nonplanar_faces(const Surface& s, const PlanarityTolerance& tolerance);
 
 // Steps 1-4 of surface.hpp; throws InputError naming the face, edge or vertex at fault.
 SurfaceTopology build_topology(const Surface& s);

@@ -128,7 +128,9 @@ TEST(PlcValidate, RejectsSelfIntersectingFacet) {
 
 TEST(PlcValidate, PlanarityToleranceClassifiesImpreciseFacets) {
   Plc near = box({0, 0, 0}, {1, 1, 1});
-  for (double& c : near.points[6]) c += 1e-13;  // three facets become non-planar by 1e-13
+  // Three facets become non-planar by about 1e-13; the coordinates keep 17 significant
+  // digits, so no coarser precision is inferred from them (io/precision.hpp).
+  for (double& c : near.points[6]) c += 1.2345678901234567e-13;
   const PlcDomain dom = build_domain(near);
   ASSERT_EQ(dom.tolerance_facets.size(), 3u);
   for (std::uint32_t f : dom.tolerance_facets) {

@@ -1,0 +1,68 @@
+// infer_precision and planarity_tolerance: see io/precision.hpp.
+#include "io/precision.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace pdr::io {
+
+namespace {
+
+// The significant digits of x's shortest round-trip decimal form (x != 0, finite).
+int significant_digits(double x) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::scientific);
+  int digits = 0;
+  for (const char* p = buf; p != r.ptr && *p != 'e'; ++p)
+    if (*p >= '0' && *p <= '9') ++digits;
+  return digits;
+}
+
+// Whether x is a float's value. Through a volatile float: GCC 12's SLP vectorizer drops
+// a double -> float -> double round trip written over an array's elements at -O2.
+bool is_float(double x) {
+  const volatile float f = static_cast<float>(x);
+  return static_cast<double>(f) == x;
+}
+
+}  // namespace
+
+CoordinatePrecision infer_precision(std::span<const Point> points) {
+  CoordinatePrecision out;
+  int digits = 0;
+  bool floats = true;
+  double largest = 0;
+  for (const Point& p : points)
+    for (const double x : p) {
+      if (x == 0 || !std::isfinite(x)) continue;
+      largest = std::max(largest, std::fabs(x));
+      floats = floats && is_float(x);
+      digits = std::max(digits, significant_digits(x));
+      if (digits > 15 && !floats) return out;  // full double precision: nothing inferred
+    }
+  out.digits = digits;
+  double relative = 0;
+  if (digits <= kExactDigits) return out;  // short decimals: exact values
+  if (digits > 9 && floats) {
+    out.float32 = true;
+    relative = std::ldexp(1.0, -24);
+  } else if (digits <= 15) {
+    relative = 5 * std::pow(10.0, -digits);
+  }
+  out.uncertainty = relative * std::sqrt(3.0) * largest;
+  return out;
+}
+
+PlanarityTolerance planarity_tolerance_of(std::span<const Point> points, double relative) {
+  PlanarityTolerance t;
+  t.relative = relative;
+  if (relative > 0) {
+    const CoordinatePrecision p = infer_precision(points);
+    t.uncertainty = p.uncertainty;
+    t.digits = p.digits;
+    t.float32 = p.float32;
+  }
+  return t;
+}
+
+}  // namespace pdr::io

@@ -1,0 +1,61 @@
+// How precisely a domain's coordinates are given, read off their values, and the planarity
+// tolerance that follows (input classification only: it never steers the mesher).
+//
+// Files written by other tools round their coordinates: ASCII STL and OFF writers print 6
+// to 9 significant digits, binary STL stores floats. A rotated box written so has facets
+// planar only to about the rounding, and faces of one plane split into triangles that are
+// coplanar only to the rounding. A tolerance relative to a facet's diameter (the
+// documented default 1e-9) cannot read these for small faces, whose rounding is large next
+// to their size, so the rounding itself is inferred from the values:
+//   - a coordinate's digits: the fewest significant decimal digits that give it back
+//     exactly (std::to_chars' shortest form); the file's precision is the most over every
+//     nonzero coordinate;
+//   - at most kExactDigits (5) digits everywhere: short decimals such as 0.5 or 2.25, read
+//     as the exact values they are (a hand-written or generated exact domain);
+//   - more than 9 digits but every coordinate a float: float32 (binary STL), relative
+//     rounding 2^-24;
+//   - 6 to 15 digits: relative rounding 5 * 10^-digits (half a unit of the last digit);
+//   - 16 or 17: full double precision; nothing is inferred (the relative tolerance alone).
+// The uncertainty of a point is then that relative rounding times sqrt(3) times the largest
+// coordinate magnitude: how far rounding may have moved any vertex.
+#pragma once
+
+#include <algorithm>
+#include <span>
+
+#include "geom/point.hpp"
+
+namespace pdr::io {
+
+struct CoordinatePrecision {
+  int digits = 17;           // the most significant digits of a coordinate (see above)
+  bool float32 = false;      // every coordinate a float, and more than 9 digits
+  double uncertainty = 0;    // how far rounding may have moved a vertex (absolute); 0: exact
+};
+
+inline constexpr int kExactDigits = 5;
+
+CoordinatePrecision infer_precision(std::span<const Point> points);
+
+// The planarity classification: a face (a facet, or a polygon of a surface file) of
+// diameter d (its bounding box's diagonal) is planar when its vertices lie within
+// admitted(d) of a plane: the relative tolerance times d, or kPlanarShare times the
+// uncertainty of the coordinates, whichever admits more. kPlanarShare bounds how far off
+// the least-squares plane of a polygon whose vertices each lie within u of some plane they
+// may lie (2u for a quad; 4u covers up to 16 vertices in the worst case).
+struct PlanarityTolerance {
+  static constexpr double kPlanarShare = 4;
+  double relative = 1e-9;
+  double uncertainty = 0;  // CoordinatePrecision::uncertainty
+  int digits = 17;         // CoordinatePrecision::digits (for reports)
+  bool float32 = false;    // CoordinatePrecision::float32 (for reports)
+  double admitted(double diameter) const {
+    return std::max(relative * diameter, kPlanarShare * uncertainty);
+  }
+};
+
+// The tolerance for a domain with these points under the relative tolerance `relative`:
+// with relative == 0 (exact classification) nothing is inferred.
+PlanarityTolerance planarity_tolerance_of(std::span<const Point> points, double relative);
+
+}  // namespace pdr::io
