@@ -30,24 +30,29 @@ bool is_float(double x) {
 CoordinatePrecision infer_precision(std::span<const Point> points) {
   CoordinatePrecision out;
   int digits = 0;
-  bool floats = true;
+  bool floats = true, full = false;
   double largest = 0;
   for (const Point& p : points)
     for (const double x : p) {
       if (x == 0 || !std::isfinite(x)) continue;
       largest = std::max(largest, std::fabs(x));
+      if (full) continue;  // full double precision: only the magnitude is wanted now
       floats = floats && is_float(x);
       digits = std::max(digits, significant_digits(x));
-      if (digits > 15 && !floats) return out;  // full double precision: nothing inferred
+      full = digits > 15 && !floats;
     }
-  out.digits = digits;
   double relative = 0;
-  if (digits <= kExactDigits) return out;  // short decimals: exact values
-  if (digits > 9 && floats) {
-    out.float32 = true;
-    relative = std::ldexp(1.0, -24);
-  } else if (digits <= 15) {
-    relative = 5 * std::pow(10.0, -digits);
+  if (full) {
+    relative = kComputedRounding;  // out.digits stays 17
+  } else {
+    out.digits = digits;
+    if (digits <= kExactDigits) return out;  // short decimals: exact values
+    if (digits > 9 && floats) {
+      out.float32 = true;
+      relative = std::ldexp(1.0, -24);
+    } else {
+      relative = 5 * std::pow(10.0, -digits);
+    }
   }
   out.uncertainty = relative * std::sqrt(3.0) * largest;
   return out;

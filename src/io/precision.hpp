@@ -15,7 +15,9 @@
 //   - more than 9 digits but every coordinate a float: float32 (binary STL), relative
 //     rounding 2^-24;
 //   - 6 to 15 digits: relative rounding 5 * 10^-digits (half a unit of the last digit);
-//   - 16 or 17: full double precision; nothing is inferred (the relative tolerance alone).
+//   - 16 or 17: full double precision, coordinates computed in double (a rotation): a few
+//     units in the last place, kComputedRounding relative (negligible next to the relative
+//     tolerance, except far from the origin: a part at 1e7 has its coordinates to 2e-9).
 // The uncertainty of a point is then that relative rounding times sqrt(3) times the largest
 // coordinate magnitude: how far rounding may have moved any vertex.
 #pragma once
@@ -34,6 +36,7 @@ struct CoordinatePrecision {
 };
 
 inline constexpr int kExactDigits = 5;
+inline constexpr double kComputedRounding = 0x1p-51;  // four half units in the last place
 
 CoordinatePrecision infer_precision(std::span<const Point> points);
 

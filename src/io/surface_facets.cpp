@@ -3,6 +3,9 @@
 // facets leave out. The decisions are exact predicates; the one construction, a hole
 // point, is an ear's centroid checked with exact orient2d before it is used.
 #include <algorithm>
+#include <array>
+#include <limits>
+#include <utility>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -82,52 +85,124 @@ bool same_facet(const Surface& s, const SurfaceTopology& t, std::size_t f, std::
 
 // Step 5b: regions of step 5 that are coplanar only within the planarity tolerance (the two
 // triangles of a planar quad in a rotated file: their fourth corners are a few ulps off each
-// other's planes). Greedy, in face order: a region grows across edges into neighbouring
-// regions with the same marker, not folded onto it, while every vertex of the union lies
-// within kMergeShare * tolerance * (the union's bounding-box diagonal), or twice the
-// coordinates' uncertainty (io/precision.hpp), of the plane of the seed face's defining
-// triple. The shares leave the domain's least-squares test (domain/plane.hpp), which
-// judges the merged facet with the full tolerance (and four times the uncertainty), a
-// margin.
+// other's planes; a side written with 7 digits as many small triangles). Greedy, in face
+// order: a region grows across edges into neighbouring regions with the same marker, not
+// folded onto it, while every distinct vertex of the union lies within
+// kMergeShare * tolerance * (the union's bounding-box diagonal), or twice the coordinates'
+// uncertainty (io/precision.hpp), of the union's least-squares plane. The shares leave the
+// domain's least-squares test (domain/plane.hpp), which judges the merged facet with the
+// full tolerance (and four times the uncertainty), a margin. (The plane of the seed face
+// would not do for the uncertainty: rounding tilts a small face's plane by about u over
+// its size, which over a large side exceeds any multiple of u.)
 constexpr double kMergeShare = 0.125, kMergeUncertainty = 2;
 
 class NearPlane {
  public:
-  NearPlane(const SurfaceTopology& t, std::size_t seed) : t_(t) {
-    const auto& [a, b, c] = t.plane[seed];
-    o_ = t.points[a];
-    const Point &p = t.points[b], &q = t.points[c];
-    const double ux = p[0] - o_[0], uy = p[1] - o_[1], uz = p[2] - o_[2];
-    const double vx = q[0] - o_[0], vy = q[1] - o_[1], vz = q[2] - o_[2];
-    n_ = {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
-    const double len = std::sqrt(n_[0] * n_[0] + n_[1] * n_[1] + n_[2] * n_[2]);
-    for (double& x : n_) x /= len;
-    lo_ = hi_ = o_;
-  }
+  // `stamp`: one entry per point, shared by the planes of one merge (entries equal to
+  // `id` mark this plane's vertices); id > 0, distinct per plane.
+  NearPlane(const SurfaceTopology& t, std::vector<std::uint32_t>& stamp, std::uint32_t id)
+      : t_(t), stamp_(stamp), id_(id) {}
+
   // Adds the vertices when the union stays within the tolerance; false (nothing added)
   // otherwise.
   bool add(std::span<const std::uint32_t> verts, const PlanarityTolerance& tolerance) {
+    const std::size_t old = members_.size();
+    Sums sums = sums_;
     Point lo = lo_, hi = hi_;
-    double dev = max_dev_;
-    for (std::uint32_t v : verts) {
+    for (const std::uint32_t v : verts) {
+      if (stamp_[v] == id_) continue;
+      stamp_[v] = id_;
+      members_.push_back(v);
       const Point& p = t_.points[v];
+      if (members_.size() == 1) origin_ = lo = hi = p;
+      sums.add(sub(p, origin_));
       for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-      dev = std::max(dev, std::fabs(n_[0] * (p[0] - o_[0]) + n_[1] * (p[1] - o_[1]) +
-                                    n_[2] * (p[2] - o_[2])));
     }
-    const double diam = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
-                                  (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                  (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    if (!(dev <= std::max(kMergeShare * tolerance.relative * diam,
-                          kMergeUncertainty * tolerance.uncertainty)))
+    const auto undo = [&] {
+      for (std::size_t i = old; i < members_.size(); ++i) stamp_[members_[i]] = 0;
+      members_.resize(old);
       return false;
-    lo_ = lo, hi_ = hi, max_dev_ = dev;
+    };
+    const double diam = norm(sub(hi, lo));
+    const double allowed = std::max(kMergeShare * tolerance.relative * diam,
+                                    kMergeUncertainty * tolerance.uncertainty);
+    const auto [centroid, normal] = sums.plane();
+    if (!(norm(normal) > 0)) {  // (near) collinear: only the seed itself may be
+      if (old > 0) return undo();
+      sums_ = sums, lo_ = lo, hi_ = hi, centroid_ = centroid, normal_ = normal, max_dev_ = 0;
+      return true;
+    }
+    // A bound on the old vertices' deviation from the new plane, from their deviation from
+    // the old one; scanned exactly when the bound does not settle it.
+    double dev = 0;
+    if (old > 0 && norm(normal_) > 0) {
+      const Point dn = sub(normal, normal_), flip = {normal[0] + normal_[0], normal[1] + normal_[1],
+                                                     normal[2] + normal_[2]};
+      const double turn = std::min(norm(dn), norm(flip));
+      dev = max_dev_ + turn * diam + std::fabs(dot(sub(centroid, centroid_), normal));
+    } else {
+      dev = std::numeric_limits<double>::infinity();
+    }
+    for (std::size_t i = old; i < members_.size(); ++i)
+      dev = std::max(dev, std::fabs(dot(sub(origin_add(members_[i]), centroid), normal)));
+    if (!(dev <= allowed)) {
+      dev = 0;
+      for (const std::uint32_t v : members_)
+        dev = std::max(dev, std::fabs(dot(sub(origin_add(v), centroid), normal)));
+      if (!(dev <= allowed)) return undo();
+    }
+    sums_ = sums, lo_ = lo, hi_ = hi, centroid_ = centroid, normal_ = normal, max_dev_ = dev;
     return true;
   }
 
  private:
+  static Point sub(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+  static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  static double norm(const Point& a) { return std::sqrt(dot(a, a)); }
+  static Point cross(const Point& a, const Point& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  }
+  // Point v relative to the origin (where the sums are taken).
+  Point origin_add(std::uint32_t v) const { return sub(t_.points[v], origin_); }
+
+  // Sums over the distinct vertices (relative to the origin) for their least-squares plane.
+  struct Sums {
+    double n = 0;
+    Point s{};
+    std::array<std::array<double, 3>, 3> ss{};
+    void add(const Point& p) {
+      n += 1;
+      for (int i = 0; i < 3; ++i) {
+        s[i] += p[i];
+        for (int j = 0; j < 3; ++j) ss[i][j] += p[i] * p[j];
+      }
+    }
+    // The centroid and the unit normal of the least-squares plane (the largest cross
+    // product of two rows of the centred scatter matrix: its null direction when the
+    // points are near a plane); a zero normal when they are (near) collinear.
+    std::pair<Point, Point> plane() const {
+      const Point c{s[0] / n, s[1] / n, s[2] / n};
+      std::array<Point, 3> m{};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m[i][j] = ss[i][j] - n * c[i] * c[j];
+      Point best{};
+      double len = 0;
+      for (const auto& [i, j] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}}) {
+        const Point x = cross(m[i], m[j]);
+        if (const double l = norm(x); l > len) len = l, best = x;
+      }
+      if (len > 0)
+        for (double& x : best) x /= len;
+      return {c, best};
+    }
+  };
+
   const SurfaceTopology& t_;
-  Point o_{}, n_{}, lo_{}, hi_{};
+  std::vector<std::uint32_t>& stamp_;
+  std::uint32_t id_;
+  std::vector<std::uint32_t> members_;  // distinct vertices
+  Point origin_{}, lo_{}, hi_{}, centroid_{}, normal_{};
+  Sums sums_;
   double max_dev_ = 0;
 };
 
@@ -145,7 +220,7 @@ void merge_within_tolerance(const Surface& s, const SurfaceTopology& t,
   std::vector<std::vector<std::uint32_t>> members(nf);
   for (std::uint32_t f = 0; f < nf; ++f) members[uf.find(f)].push_back(f);
   std::vector<std::uint8_t> taken(nf, 0);
-  std::vector<std::uint32_t> verts;
+  std::vector<std::uint32_t> verts, stamp(t.points.size(), 0);
   auto region_vertices = [&](std::uint32_t root) {
     verts.clear();
     for (std::uint32_t f : members[root]) {
@@ -157,7 +232,7 @@ void merge_within_tolerance(const Surface& s, const SurfaceTopology& t,
   for (std::uint32_t seed = 0; seed < nf; ++seed) {
     if (uf.find(seed) != seed || taken[seed]) continue;
     taken[seed] = 1;
-    NearPlane plane(t, seed);
+    NearPlane plane(t, stamp, seed + 1);
     plane.add(region_vertices(seed), tolerance);
     std::vector<std::uint32_t> queue{seed};  // region roots of the group
     for (std::size_t q = 0; q < queue.size(); ++q)

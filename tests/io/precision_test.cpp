@@ -44,11 +44,12 @@ TEST(Precision, ShortDecimalsAreExact) {
   EXPECT_EQ(p.uncertainty, 0.0);
 }
 
-TEST(Precision, FullDoublesInferNothing) {
-  const CoordinatePrecision p = infer_precision(rotated_points(50, 1));
+TEST(Precision, FullDoublesHaveTheirOwnRounding) {
+  const std::vector<Point> pts = rotated_points(50, 1);
+  const CoordinatePrecision p = infer_precision(pts);
   EXPECT_GE(p.digits, 16);
   EXPECT_FALSE(p.float32);
-  EXPECT_EQ(p.uncertainty, 0.0);
+  EXPECT_DOUBLE_EQ(p.uncertainty, kComputedRounding * std::sqrt(3.0) * largest(pts));
 }
 
 TEST(Precision, PrintedDigitsGiveTheirRounding) {
