@@ -142,9 +142,9 @@ std::string bent_right_angles_hint(const DomainReport& r) {
       });
   if (r.violations.empty() || !near_right) return {};
   return "every violation is within 1e-4 deg of a right angle: if the input means right "
-         "angles, its coordinates are less precise than the planarity tolerance admits (the "
-         "vertices known to the tolerance times the domain's diameter); raise it "
-         "(--planarity-tolerance) to read them as right";
+         "angles, its coordinates are less precise than the planarity tolerance and the "
+         "digits they are written with admit (planarity.coordinate_uncertainty); raise the "
+         "tolerance (--planarity-tolerance) to read them as right";
 }
 
 std::string render_text(const DomainReport& r) {
