@@ -39,8 +39,9 @@ CLI::App* add_check_command(CLI::App& app, CheckArgs& chk) {
   cchk->add_flag("--json", chk.json, "Print the report as one JSON object");
   cchk->add_option("--threads", chk.threads, "Worker threads")->check(CLI::Range(1, 256));
   cchk->add_option("--planarity-tolerance", chk.planarity_tolerance,
-                   "As pdr mesh's: the domain's facets may deviate T facet diameters from a "
-                   "plane, and vertices within 2T of a facet's plane count as on it")
+                   "As pdr mesh's: the domain's facets may deviate T facet diameters (or the "
+                   "rounding of their coordinates' digits) from a plane, and vertices within 2T "
+                   "of an exact facet's plane, 8T of an inexact one's, count as on it")
       ->check(CLI::Range(1e-16, 1e-3));
   cchk->add_option("--max-reported", chk.max_reported, "Findings listed per check");
   cchk->add_option("--explain", chk.explain,
@@ -82,9 +83,7 @@ int run_check(const CheckArgs& args) {
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
   opt.threads = args.threads;
-  set_check_tolerances(args.planarity_tolerance,
-                       domain ? std::span<const Point>(domain->points) : std::span<const Point>(),
-                       opt);
+  set_check_tolerances(args.planarity_tolerance, domain ? &*domain : nullptr, opt);
   if (progress.enabled())
     opt.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
   const bool every_finding = args.explain || args.vtu;

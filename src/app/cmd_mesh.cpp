@@ -131,8 +131,9 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   c->add_option("--seed", a.seed, "Seed of the initial insertion order");
   c->add_option("--planarity-tolerance", a.planarity_tolerance,
                 "Accept facets whose vertices lie within T facet diameters of a plane "
-                "(default 1e-9; TetGen's -T); the check then counts vertices within 2T as on "
-                "a facet")
+                "(default 1e-9; TetGen's -T), or within the rounding of the coordinates' "
+                "digits; the check then counts vertices within 2T (8T for inexact facets) as "
+                "on a facet")
       ->check(CLI::Range(1e-16, 1e-3));
   c->add_option("--max-vertices", a.options.max_vertices, "Vertex cap (0: derived)");
   c->add_option("--surface-sizing", a.surface_sizing,
@@ -328,7 +329,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     check::Options co;
     co.ratio_bound = opt.ratio;
     co.threads = args.threads;
-    set_check_tolerances(args.planarity_tolerance, an.domain.plc.points, co);
+    set_check_tolerances(args.planarity_tolerance, &an.domain.plc, co);
     if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };

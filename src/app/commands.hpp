@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -77,13 +76,13 @@ inline domain::PlcOptions plc_options(const std::optional<double>& planarity) {
 // ones pdr mesh puts on the plane of three of them within 7T: surface/chart.hpp); for
 // exactly planar facets and segments, within max(2T, the check's default) when T is
 // given, else the check's default (rounding only).
-// The coordinates' uncertainty (io/precision.hpp) is the domain's, as the analysis infers
-// it from `points` (none under --planarity-tolerance 0).
-inline void set_check_tolerances(const std::optional<double>& planarity,
-                                 std::span<const Point> points, check::Options& o) {
+// The coordinates' uncertainty (io/precision.hpp) is the domain's, as its analysis infers
+// it (none without a domain).
+inline void set_check_tolerances(const std::optional<double>& planarity, const Plc* domain,
+                                 check::Options& o) {
   const double t = plc_options(planarity).planarity_tolerance;
   o.inexact_facet_tolerance = 8 * t;
-  o.coordinate_uncertainty = io::planarity_tolerance_of(points, t).uncertainty;
+  o.coordinate_uncertainty = domain ? io::planarity_tolerance_of(*domain, t).uncertainty : 0;
   if (planarity) o.relative_tolerance = std::max(o.relative_tolerance, 2 * *planarity);
 }
 int run_mesh(const MeshArgs& args);

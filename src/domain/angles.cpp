@@ -45,6 +45,11 @@ double ray_cone_deg(const Vec& s, const Vec& r1, const Vec& r2) {
   return std::min(angle_deg(s, r1), angle_deg(s, r2));
 }
 
+// No angle more than this (radians, 0.057 degrees) from a right angle is read as one,
+// whatever the uncertainty and however short the edges (a tolerance classifies rounding,
+// not shapes).
+constexpr double kMaxOpening = 1e-3;
+
 // Whether the angle at o between a and b is acute as the input means it: the exact sign
 // of the cosine is positive, and moving o, a and b by at most `delta` each (the positional
 // uncertainty the planarity tolerance admits, uncertainty() below) cannot be shown to make
@@ -60,7 +65,8 @@ bool acute(const Point& o, const Point& a, const Point& b, double delta, std::si
   const Vec x = sub(a, o), y = sub(b, o);
   const double lx = norm(x), ly = norm(y);
   const double cosine = std::min(1.0, dot(x, y) / (lx * ly));
-  const double opening = delta * (1 / lx + 1 / ly + std::hypot(1 / lx, 1 / ly));
+  const double opening =
+      std::min(kMaxOpening, delta * (1 / lx + 1 / ly + std::hypot(1 / lx, 1 / ly)));
   if (std::asin(cosine) > opening) return true;
   ++tolerated;
   return false;
@@ -82,8 +88,9 @@ bool acute_dihedral(const Point& p, const Point& q, const Point& a, const Point&
   const double cosine = std::min(1.0, dot(x, y) / (lx * ly));
   const double ga = lu / lx, gb = lu / ly;  // 1 / h_a, 1 / h_b
   const double ta = dot(wa, u) / uu, tb = dot(wb, u) / uu;
-  const double opening = delta * (ga + gb + std::hypot((1 - ta) * ga, (1 - tb) * gb) +
-                                  std::hypot(ta * ga, tb * gb));
+  const double opening =
+      std::min(kMaxOpening, delta * (ga + gb + std::hypot((1 - ta) * ga, (1 - tb) * gb) +
+                                     std::hypot(ta * ga, tb * gb)));
   if (std::asin(cosine) > opening) return true;
   ++tolerated;
   return false;

@@ -42,10 +42,12 @@
 // angles a few ulps below 90°, and one printed with 9 significant digits a few 1e-9
 // radians. The planarity tolerance (PlcOptions::planarity_tolerance, relative, 1e-9 by
 // default, the one that accepts facets planar within rounding) also classifies these: it
-// admits vertices known to delta = tol times the domain's diameter, and an angle whose exact
-// cosine is positive but which moving its outer points by at most delta opens to 90° (or
-// 270°) is the right angle the input means, counted in Admissibility::tolerated (the bound
-// is in angles.cpp). It classifies the input; the mesher never sees it.
+// admits vertices known to delta = tol times the domain's diameter, or to the uncertainty of
+// the coordinates' digits (io/precision.hpp) when that is more, and an angle whose exact
+// cosine is positive but which moving its points (the vertex too) by at most delta opens to
+// 90° (or 270°), to first order and by at most 1e-3 radians, is the right angle the input
+// means, counted in Admissibility::tolerated (the bound is in angles.cpp). It classifies
+// the input; the mesher never sees it.
 #pragma once
 
 #include <array>

@@ -223,7 +223,7 @@ PlcDomain build_domain(const Plc& plc, const PlcOptions& options) {
   PlcDomain dom;
   dom.plc = plc;
   dom.options = options;
-  dom.tolerance = io::planarity_tolerance_of(dom.plc.points, options.planarity_tolerance);
+  dom.tolerance = io::planarity_tolerance_of(dom.plc, options.planarity_tolerance);
   dom.facets.resize(plc.facets.size());
   detail::check_points(plc);
   std::vector<detail::FacetPolys> polys = detail::check_polygons(plc);

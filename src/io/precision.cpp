@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 namespace pdr::io {
 
@@ -21,6 +22,7 @@ int significant_digits(double x) {
 // Whether x is a float's value. Through a volatile float: GCC 12's SLP vectorizer drops
 // a double -> float -> double round trip written over an array's elements at -O2.
 bool is_float(double x) {
+  if (!(std::fabs(x) <= std::numeric_limits<float>::max())) return false;
   const volatile float f = static_cast<float>(x);
   return static_cast<double>(f) == x;
 }
@@ -32,15 +34,24 @@ CoordinatePrecision infer_precision(std::span<const Point> points) {
   int digits = 0;
   bool floats = true, full = false;
   double largest = 0;
-  for (const Point& p : points)
+  Point lo{}, hi{};
+  bool first = true;
+  for (const Point& p : points) {
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = first ? p[k] : std::min(lo[k], p[k]);
+      hi[k] = first ? p[k] : std::max(hi[k], p[k]);
+    }
+    first = false;
     for (const double x : p) {
-      if (x == 0 || !std::isfinite(x)) continue;
+      if (x == 0) continue;
       largest = std::max(largest, std::fabs(x));
       if (full) continue;  // full double precision: only the magnitude is wanted now
       floats = floats && is_float(x);
       digits = std::max(digits, significant_digits(x));
       full = digits > 15 && !floats;
     }
+  }
   double relative = 0;
   if (full) {
     relative = kComputedRounding;  // out.digits stays 17
@@ -54,7 +65,8 @@ CoordinatePrecision infer_precision(std::span<const Point> points) {
       relative = 5 * std::pow(10.0, -digits);
     }
   }
-  out.uncertainty = relative * std::sqrt(3.0) * largest;
+  const double diameter = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  out.uncertainty = std::min(relative * std::sqrt(3.0) * largest, kMaxUncertainty * diameter);
   return out;
 }
 
@@ -67,6 +79,16 @@ PlanarityTolerance planarity_tolerance_of(std::span<const Point> points, double 
     t.digits = p.digits;
     t.float32 = p.float32;
   }
+  return t;
+}
+
+PlanarityTolerance planarity_tolerance_of(const Plc& plc, double relative) {
+  if (plc.precision.digits == 0 || !(relative > 0)) return planarity_tolerance_of(plc.points, relative);
+  PlanarityTolerance t;
+  t.relative = relative;
+  t.uncertainty = plc.precision.uncertainty;
+  t.digits = plc.precision.digits;
+  t.float32 = plc.precision.float32;
   return t;
 }
 

@@ -19,13 +19,19 @@
 //     units in the last place, kComputedRounding relative (negligible next to the relative
 //     tolerance, except far from the origin: a part at 1e7 has its coordinates to 2e-9).
 // The uncertainty of a point is then that relative rounding times sqrt(3) times the largest
-// coordinate magnitude: how far rounding may have moved any vertex.
+// coordinate magnitude: how far rounding may have moved any vertex; but at most
+// kMaxUncertainty (1e-5) times the domain's diameter (its bounding box's diagonal). The
+// digits cannot tell exact values from rounded ones: integers from 100000 to 100010 have
+// 6 digits, as a 6-digit print of a part at 1e5 would, and read as rounded they would make
+// the whole part uncertain. A rounding coarser than 1e-5 of the part is no precision a
+// tolerance should read; beyond it the input is taken as given.
 #pragma once
 
 #include <algorithm>
 #include <span>
 
 #include "geom/point.hpp"
+#include "mesh/plc.hpp"
 
 namespace pdr::io {
 
@@ -37,6 +43,7 @@ struct CoordinatePrecision {
 
 inline constexpr int kExactDigits = 5;
 inline constexpr double kComputedRounding = 0x1p-51;  // four half units in the last place
+inline constexpr double kMaxUncertainty = 1e-5;       // of the domain's diameter
 
 CoordinatePrecision infer_precision(std::span<const Point> points);
 
@@ -60,5 +67,8 @@ struct PlanarityTolerance {
 // The tolerance for a domain with these points under the relative tolerance `relative`:
 // with relative == 0 (exact classification) nothing is inferred.
 PlanarityTolerance planarity_tolerance_of(std::span<const Point> points, double relative);
+// The same for a domain: its reader's inference (Plc::precision) when it made one, else
+// one from its points.
+PlanarityTolerance planarity_tolerance_of(const Plc& plc, double relative);
 
 }  // namespace pdr::io

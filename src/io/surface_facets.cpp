@@ -233,7 +233,9 @@ void merge_within_tolerance(const Surface& s, const SurfaceTopology& t,
     if (uf.find(seed) != seed || taken[seed]) continue;
     taken[seed] = 1;
     NearPlane plane(t, stamp, seed + 1);
-    plane.add(region_vertices(seed), tolerance);
+    // A seed not within the tolerance of its own least-squares plane (a sliver whose
+    // plane rounding cannot place, or no tolerance at all) stays as it is.
+    if (!plane.add(region_vertices(seed), tolerance)) continue;
     std::vector<std::uint32_t> queue{seed};  // region roots of the group
     for (std::size_t q = 0; q < queue.size(); ++q)
       for (std::uint32_t f : members[queue[q]]) {
@@ -458,6 +460,18 @@ void drop_repeated_facets(Plc& plc) {
   plc.facets = std::move(kept);
 }
 
+// The points some face uses: the domain keeps those alone, and infers their precision
+// (io/precision.hpp) from them, so the reader does too.
+std::vector<Point> used_points(const Surface& s) {
+  std::vector<std::uint8_t> used(s.points.size(), 0);
+  for (const std::uint32_t v : s.corners)
+    if (v < used.size()) used[v] = 1;
+  std::vector<Point> out;
+  for (std::size_t v = 0; v < s.points.size(); ++v)
+    if (used[v]) out.push_back(s.points[v]);
+  return out;
+}
+
 }  // namespace
 
 Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
@@ -465,7 +479,7 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
     throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
                                   "closed surface of triangles or polygons");
   if (const auto once = without_repeated_faces(s)) return surface_to_plc(*once, planarity_tolerance);
-  const PlanarityTolerance tolerance = planarity_tolerance_of(s.points, planarity_tolerance);
+  const PlanarityTolerance tolerance = planarity_tolerance_of(used_points(s), planarity_tolerance);
   if (const auto split = split_nonplanar_faces(s, tolerance))
     return surface_to_plc(*split, planarity_tolerance);
   const SurfaceTopology t = build_topology(s);
@@ -518,6 +532,10 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
   for (PlcFacet& facet : plc.facets)
     for (auto& poly : facet.polygons)
       for (std::uint32_t& v : poly) v = renumber[v];
+  if (planarity_tolerance > 0) {
+    const CoordinatePrecision p = infer_precision(used_points(s));
+    plc.precision = {p.digits, p.float32, p.uncertainty};
+  }
   return plc;
 }
 

@@ -46,6 +46,15 @@ struct Plc {
   std::vector<Point> holes;            // volume holes
   std::vector<std::size_t> hole_lines;
   std::vector<PlcRegion> regions;
+  // How precisely the file gives the coordinates, as a surface reader inferred it from
+  // every point a face uses before merging faces (io/precision.hpp); digits 0: not
+  // inferred here (the domain analysis infers it from `points`, which a surface's merged
+  // facets leave fewer of).
+  struct Precision {
+    int digits = 0;
+    bool float32 = false;
+    double uncertainty = 0;
+  } precision;
 };
 
 }  // namespace pdr

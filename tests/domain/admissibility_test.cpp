@@ -197,6 +197,12 @@ TEST(PlcAdmissibility, RotatedRightAnglesStayRight) {
     EXPECT_GE(analyzed, 30u) << printing.digits << " digits";
     EXPECT_GT(bent, 0u) << printing.digits << " digits";
   }
+  // A prism with exact integer coordinates near 1e5 (six digits, as a 6-digit print would
+  // have) and an 84° corner: however its digits are read, never a right angle (the
+  // uncertainty is at most 1e-5 of the domain, and an angle more than 1e-3 radians from
+  // 90° is never read as right).
+  const Plc integers = prism({{100000, 100000}, {100010, 100000}, {100001, 100010}}, 100000, 100010);
+  EXPECT_FALSE(analyze_domain(integers).admissible);
   // A prism over a triangle with an 89.9° corner: acute beyond either tolerance.
   const double t = 89.9 * 3.14159265358979323846 / 180;
   const Plc wedge = prism({{0, 0}, {4, 0}, {4 * std::cos(t), 4 * std::sin(t)}}, 0, 2);

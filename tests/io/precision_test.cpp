@@ -89,6 +89,38 @@ TEST(Precision, ExactClassificationInfersNothing) {
   EXPECT_DOUBLE_EQ(t.admitted(1e9), 1.0);  // the relative part, for a huge face
 }
 
+// Exact integers with six digits look like a 6-digit print of a part at 1e5: read as
+// rounded they would make the part uncertain by 0.87 of its 10 units. The uncertainty is
+// at most kMaxUncertainty of the domain's diameter.
+TEST(Precision, UncertaintyIsSmallNextToTheDomain) {
+  std::vector<Point> pts;
+  for (int i = 0; i <= 10; i += 5)
+    for (int j = 0; j <= 10; j += 5) pts.push_back({100000.0 + i, 100000.0 + j, 100001.0 + i});
+  const CoordinatePrecision p = infer_precision(pts);
+  EXPECT_EQ(p.digits, 6);
+  const double diagonal = std::sqrt(300.0);
+  EXPECT_GT(p.uncertainty, 0.0);
+  EXPECT_LE(p.uncertainty, kMaxUncertainty * diagonal * (1 + 1e-12));
+}
+
+// A point no face uses says nothing of the surface's precision: the reader infers it from
+// the points its faces use, as the domain analysis does from the domain's.
+TEST(Precision, SurfaceReaderIgnoresUnusedPoints) {
+  Surface s;
+  s.source = "cube.off";
+  for (int k = 0; k < 8; ++k)
+    s.add_point({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)}, 0, k);
+  s.add_point({1000000.5, 0.123456789, 0}, 0, 8);  // used by no face
+  for (const std::vector<std::uint32_t>& f : {std::vector<std::uint32_t>{0, 2, 3, 1},
+                                             {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2},
+                                             {1, 3, 7, 5}})
+    s.add_face(f, 0, 0);
+  const Plc plc = surface_to_plc(s, 1e-9);
+  EXPECT_LE(plc.precision.digits, kExactDigits);
+  EXPECT_EQ(plc.precision.uncertainty, 0.0);
+  EXPECT_EQ(planarity_tolerance_of(plc, 1e-9).uncertainty, 0.0);
+}
+
 // A box of 2 x 2 grids of squares on each side, each square as two triangles, turned by
 // a rotation and written with `digits` digits: the facets the surface reader makes.
 std::size_t facets_of_rotated_box(int digits, double relative) {
