@@ -82,7 +82,7 @@ inline void set_check_tolerances(const std::optional<double>& planarity, const P
                                  check::Options& o) {
   const double t = plc_options(planarity).planarity_tolerance;
   o.inexact_facet_tolerance = 8 * t;
-  o.coordinate_uncertainty = domain ? io::planarity_tolerance_of(*domain, t).uncertainty : 0;
+  o.coordinate_uncertainty = domain ? io::planarity_tolerance_of(*domain, t).uncertainty() : 0;
   if (planarity) o.relative_tolerance = std::max(o.relative_tolerance, 2 * *planarity);
 }
 int run_mesh(const MeshArgs& args);

@@ -174,8 +174,8 @@ std::string render_text(const DomainReport& r) {
   } else {
     o << "  planarity: " << r.tolerance_facets.size()
       << " facet(s) planar only within the relative tolerance " << num(r.planarity_tolerance)
-      << (r.tolerance.uncertainty > 0
-              ? " or the coordinates' rounding (" + num(r.tolerance.uncertainty, "%.3g") + ")"
+      << (r.tolerance.uncertainty() > 0
+              ? " or the coordinates' rounding (" + num(r.tolerance.uncertainty(), "%.3g") + ")"
               : std::string())
       << ":\n";
     for (const ToleranceFacet& t : r.tolerance_facets)
@@ -232,9 +232,9 @@ nlohmann::json to_json(const DomainReport& r) {
   // digits, whether they are all floats, and how far rounding may have moved a vertex
   // (0: exact, or full double precision).
   j["planarity"] = {{"tolerance", r.planarity_tolerance},
-                    {"coordinate_digits", r.tolerance.digits},
-                    {"coordinate_float32", r.tolerance.float32},
-                    {"coordinate_uncertainty", r.tolerance.uncertainty},
+                    {"coordinate_digits", r.tolerance.precision.digits},
+                    {"coordinate_float32", r.tolerance.precision.float32},
+                    {"coordinate_uncertainty", r.tolerance.uncertainty()},
                     {"tolerance_facets", tol}};
   json stats = json::object();
   for (int k = 0; k < angle_kinds; ++k) {

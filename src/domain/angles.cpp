@@ -109,7 +109,7 @@ double uncertainty(const std::vector<Point>& pts, const io::PlanarityTolerance& 
       lo[i] = std::min(lo[i], q[i]);
       hi[i] = std::max(hi[i], q[i]);
     }
-  return std::max(t.relative * norm(sub(hi, lo)), t.uncertainty);
+  return std::max(t.relative * norm(sub(hi, lo)), t.uncertainty());
 }
 
 struct Corner {

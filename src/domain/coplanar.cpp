@@ -76,7 +76,7 @@ void fit_planes(const std::vector<FacetPolys>& polys, PlcDomain& dom) {
            number(fit.plane.max_deviation) +
            " facet diameters off the best-fit plane of this facet (tolerance " +
            number(tol.relative) +
-           (tol.uncertainty > 0 ? ", or " + number(tol.admitted(0) / fit.plane.diameter) +
+           (tol.uncertainty() > 0 ? ", or " + number(tol.admitted(0) / fit.plane.diameter) +
                                       " for the rounding of the coordinates"
                                 : std::string()) +
            "); fix the coordinates, split the facet into planar facets, or raise the "

@@ -54,7 +54,8 @@ CoordinatePrecision infer_precision(std::span<const Point> points) {
   }
   double relative = 0;
   if (full) {
-    relative = kComputedRounding;  // out.digits stays 17
+    out.digits = 17;
+    relative = kComputedRounding;
   } else {
     out.digits = digits;
     if (digits <= kExactDigits) return out;  // short decimals: exact values
@@ -71,25 +72,12 @@ CoordinatePrecision infer_precision(std::span<const Point> points) {
 }
 
 PlanarityTolerance planarity_tolerance_of(std::span<const Point> points, double relative) {
-  PlanarityTolerance t;
-  t.relative = relative;
-  if (relative > 0) {
-    const CoordinatePrecision p = infer_precision(points);
-    t.uncertainty = p.uncertainty;
-    t.digits = p.digits;
-    t.float32 = p.float32;
-  }
-  return t;
+  return {relative, relative > 0 ? infer_precision(points) : CoordinatePrecision{}};
 }
 
 PlanarityTolerance planarity_tolerance_of(const Plc& plc, double relative) {
-  if (plc.precision.digits == 0 || !(relative > 0)) return planarity_tolerance_of(plc.points, relative);
-  PlanarityTolerance t;
-  t.relative = relative;
-  t.uncertainty = plc.precision.uncertainty;
-  t.digits = plc.precision.digits;
-  t.float32 = plc.precision.float32;
-  return t;
+  if (plc.precision.digits == 0) return planarity_tolerance_of(plc.points, relative);
+  return {relative, relative > 0 ? plc.precision : CoordinatePrecision{}};
 }
 
 }  // namespace pdr::io

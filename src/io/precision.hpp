@@ -35,16 +35,11 @@
 
 namespace pdr::io {
 
-struct CoordinatePrecision {
-  int digits = 17;           // the most significant digits of a coordinate (see above)
-  bool float32 = false;      // every coordinate a float, and more than 9 digits
-  double uncertainty = 0;    // how far rounding may have moved a vertex (absolute); 0: exact
-};
-
 inline constexpr int kExactDigits = 5;
 inline constexpr double kComputedRounding = 0x1p-51;  // four half units in the last place
 inline constexpr double kMaxUncertainty = 1e-5;       // of the domain's diameter
 
+// digits: 17 for full doubles; 0 when no coordinate is nonzero.
 CoordinatePrecision infer_precision(std::span<const Point> points);
 
 // The planarity classification: a face (a facet, or a polygon of a surface file) of
@@ -56,11 +51,10 @@ CoordinatePrecision infer_precision(std::span<const Point> points);
 struct PlanarityTolerance {
   static constexpr double kPlanarShare = 4;
   double relative = 1e-9;
-  double uncertainty = 0;  // CoordinatePrecision::uncertainty
-  int digits = 17;         // CoordinatePrecision::digits (for reports)
-  bool float32 = false;    // CoordinatePrecision::float32 (for reports)
+  CoordinatePrecision precision;  // none (uncertainty 0) when relative is 0
+  double uncertainty() const { return precision.uncertainty; }
   double admitted(double diameter) const {
-    return std::max(relative * diameter, kPlanarShare * uncertainty);
+    return std::max(relative * diameter, kPlanarShare * uncertainty());
   }
 };
 

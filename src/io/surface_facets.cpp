@@ -125,7 +125,7 @@ class NearPlane {
     };
     const double diam = norm(sub(hi, lo));
     const double allowed = std::max(kMergeShare * tolerance.relative * diam,
-                                    kMergeUncertainty * tolerance.uncertainty);
+                                    kMergeUncertainty * tolerance.uncertainty());
     const auto [centroid, normal] = sums.plane();
     if (!(norm(normal) > 0)) {  // (near) collinear: only the seed itself may be
       if (old > 0) return undo();
@@ -472,16 +472,11 @@ std::vector<Point> used_points(const Surface& s) {
   return out;
 }
 
-}  // namespace
-
-Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
-  if (s.face_count() == 0)
-    throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
-                                  "closed surface of triangles or polygons");
-  if (const auto once = without_repeated_faces(s)) return surface_to_plc(*once, planarity_tolerance);
-  const PlanarityTolerance tolerance = planarity_tolerance_of(used_points(s), planarity_tolerance);
-  if (const auto split = split_nonplanar_faces(s, tolerance))
-    return surface_to_plc(*split, planarity_tolerance);
+// surface_to_plc under the tolerance inferred once for the file (removing repeated faces
+// and splitting non-planar ones keeps the points the faces use).
+Plc to_plc(const Surface& s, const PlanarityTolerance& tolerance) {
+  if (const auto once = without_repeated_faces(s)) return to_plc(*once, tolerance);
+  if (const auto split = split_nonplanar_faces(s, tolerance)) return to_plc(*split, tolerance);
   const SurfaceTopology t = build_topology(s);
   const std::size_t nf = s.face_count();
   UnionFind uf(nf);
@@ -532,11 +527,17 @@ Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
   for (PlcFacet& facet : plc.facets)
     for (auto& poly : facet.polygons)
       for (std::uint32_t& v : poly) v = renumber[v];
-  if (planarity_tolerance > 0) {
-    const CoordinatePrecision p = infer_precision(used_points(s));
-    plc.precision = {p.digits, p.float32, p.uncertainty};
-  }
+  plc.precision = tolerance.precision;
   return plc;
+}
+
+}  // namespace
+
+Plc surface_to_plc(const Surface& s, double planarity_tolerance) {
+  if (s.face_count() == 0)
+    throw InputError(s.source, 0, "closed surface: the file holds no faces; a domain needs a "
+                                  "closed surface of triangles or polygons");
+  return to_plc(s, planarity_tolerance_of(used_points(s), planarity_tolerance));
 }
 
 }  // namespace pdr::io

@@ -68,7 +68,7 @@ bool planar_enough(const Surface& s, std::span<const std::uint32_t> c, const Poi
   const double diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                                 (hi[2] - lo[2]) * (hi[2] - lo[2]));
   return dev <= std::max(kSplitShare * tolerance.relative * diag,
-                         kSplitUncertainty * tolerance.uncertainty);
+                         kSplitUncertainty * tolerance.uncertainty());
 }
 
 double dist2(const Point& a, const Point& b) {

@@ -36,6 +36,14 @@ enum class Enclosure : std::uint8_t {
                // another bounds a second region (TetGen's reading of a .poly or .smesh)
 };
 
+// How precisely a domain's coordinates are given (io/precision.hpp infers it from their
+// values).
+struct CoordinatePrecision {
+  int digits = 0;          // the most significant digits of a coordinate; 0: not inferred
+  bool float32 = false;    // every coordinate a float, and more than 9 digits
+  double uncertainty = 0;  // how far rounding may have moved a vertex (absolute); 0: exact
+};
+
 struct Plc {
   std::string source;                  // file name, for diagnostics
   Enclosure enclosure = Enclosure::Parity;
@@ -47,14 +55,9 @@ struct Plc {
   std::vector<std::size_t> hole_lines;
   std::vector<PlcRegion> regions;
   // How precisely the file gives the coordinates, as a surface reader inferred it from
-  // every point a face uses before merging faces (io/precision.hpp); digits 0: not
-  // inferred here (the domain analysis infers it from `points`, which a surface's merged
-  // facets leave fewer of).
-  struct Precision {
-    int digits = 0;
-    bool float32 = false;
-    double uncertainty = 0;
-  } precision;
+  // every point a face uses before merging faces; digits 0: not inferred here (the domain
+  // analysis infers it from `points`, which a surface's merged facets leave fewer of).
+  CoordinatePrecision precision;
 };
 
 }  // namespace pdr

@@ -81,11 +81,11 @@ TEST(Precision, ExactClassificationInfersNothing) {
   std::vector<Point> pts = rotated_points(10, 4);
   for (Point& p : pts)
     for (double& x : p) x = printed(x, 7);
-  EXPECT_EQ(planarity_tolerance_of(pts, 0).uncertainty, 0.0);
+  EXPECT_EQ(planarity_tolerance_of(pts, 0).uncertainty(), 0.0);
   const PlanarityTolerance t = planarity_tolerance_of(pts, 1e-9);
-  EXPECT_GT(t.uncertainty, 0.0);
-  EXPECT_EQ(t.digits, 7);
-  EXPECT_DOUBLE_EQ(t.admitted(1.0), PlanarityTolerance::kPlanarShare * t.uncertainty);
+  EXPECT_GT(t.uncertainty(), 0.0);
+  EXPECT_EQ(t.precision.digits, 7);
+  EXPECT_DOUBLE_EQ(t.admitted(1.0), PlanarityTolerance::kPlanarShare * t.uncertainty());
   EXPECT_DOUBLE_EQ(t.admitted(1e9), 1.0);  // the relative part, for a huge face
 }
 
@@ -118,7 +118,7 @@ TEST(Precision, SurfaceReaderIgnoresUnusedPoints) {
   const Plc plc = surface_to_plc(s, 1e-9);
   EXPECT_LE(plc.precision.digits, kExactDigits);
   EXPECT_EQ(plc.precision.uncertainty, 0.0);
-  EXPECT_EQ(planarity_tolerance_of(plc, 1e-9).uncertainty, 0.0);
+  EXPECT_EQ(planarity_tolerance_of(plc, 1e-9).uncertainty(), 0.0);
 }
 
 // A box of 2 x 2 grids of squares on each side, each square as two triangles, turned by

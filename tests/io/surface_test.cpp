@@ -192,7 +192,7 @@ Surface one_face(const std::string& source, const std::vector<Point>& corners, s
 // the split takes 1-3, the diagonal inside.
 TEST(Surface, ConcaveNonPlanarQuadSplitsAlongItsInnerDiagonal) {
   const auto split = split_nonplanar_faces(
-      one_face("q.off", {{0, 0, 0}, {10, 0.5, 0}, {0, 1, 0}, {5, 0.5, 0.01}}, 7), {1e-9});
+      one_face("q.off", {{0, 0, 0}, {10, 0.5, 0}, {0, 1, 0}, {5, 0.5, 0.01}}, 7), {1e-9, {}});
   ASSERT_TRUE(split.has_value());
   ASSERT_EQ(split->face_count(), 2u);
   for (std::size_t f = 0; f < 2; ++f) {
@@ -213,7 +213,7 @@ TEST(Surface, NonPlanarFaceSplitsIntoItsBestShapedTriangulation) {
   const auto split = split_nonplanar_faces(
       one_face("l.off",
                {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1 + 1e-7, 1 + 1e-7, 1e-7}, {1, 2, 0}, {0, 2, 0}}, 3),
-      {1e-9});
+      {1e-9, {}});
   ASSERT_TRUE(split.has_value());
   ASSERT_EQ(split->face_count(), 4u);
   for (std::size_t f = 0; f < 4; ++f) {
@@ -238,7 +238,7 @@ TEST(Surface, NonPlanarFaceSplitsIntoItsBestShapedTriangulation) {
     const double t = 2 * 3.141592653589793 * i / 120;
     ring.push_back({std::cos(t), std::sin(t), i % 2 ? 1e-6 : 0.0});
   }
-  const auto fan = split_nonplanar_faces(one_face("big.off", ring, 1), {1e-9});
+  const auto fan = split_nonplanar_faces(one_face("big.off", ring, 1), {1e-9, {}});
   ASSERT_TRUE(fan.has_value());
   EXPECT_EQ(fan->face_count(), 118u);
 }

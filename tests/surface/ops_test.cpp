@@ -133,7 +133,7 @@ RC_GTEST_PROP(SurfaceChart, PlacementStaysWithinSevenDeviationsOfTheLeastSquares
     pts.push_back({r * std::cos(t), r * std::sin(t), *rc::gen::inRange(-1000, 1001) * 1e-12});
     ids.push_back(static_cast<std::uint32_t>(i));
   }
-  const PlaneFit fit = fit_facet_plane(pts, ids, {1e-6});
+  const PlaneFit fit = fit_facet_plane(pts, ids, {1e-6, {}});
   RC_PRE(fit.status == PlaneStatus::Ok && !fit.plane.exact);
   const FacetChart ch = make_chart(fit.plane, pts);
   for (int k = 0; k < 20; ++k) {
