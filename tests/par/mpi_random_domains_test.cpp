@@ -16,6 +16,7 @@
 #include "refine/property_support.hpp"
 #include "support/admissible_fixtures.hpp"
 #include "support/outside_fixtures.hpp"
+#include "support/union_fixtures.hpp"
 
 namespace pdr::par {
 namespace {
@@ -37,14 +38,15 @@ std::uint64_t g_surface_points = 0;  // of them on ∂Ω (subsegment midpoints, 
 
 // Why the parallel run on plc fails ("" when it passes). Outside the theory (`outside`),
 // exit 3 is allowed, with quality.ratio and encroachment.* the only failing checks, and
-// never a non-conforming mesh.
-std::string failure(const Plc& plc, const refine::test::Sizing& z, bool outside = false) {
+// never a non-conforming mesh. `extra`: more options of the run.
+std::string failure(const Plc& plc, const refine::test::Sizing& z, bool outside = false,
+                    const std::string& extra = "") {
   const std::string path = "mpi-case.poly";
   std::ofstream(path) << pdr::test::poly_text(plc, "mpi random domain\noptions:" + z.options());
   std::string out;
   const int code = run(std::string(PDR_MPIEXEC) + " -n 3 --oversubscribe " PDR_BINARY " mesh " +
                            path + " -o mpi-case-out --formats node --initial-tets 300 --json" +
-                           z.options() + " 2>/dev/null",
+                           z.options() + extra + " 2>/dev/null",
                        out);
   if (code != 0 && !(outside && code == 3)) return "exit " + std::to_string(code) + ": " + out;
   const auto j = nlohmann::json::parse(out, nullptr, false);
@@ -91,7 +93,7 @@ TEST(MpiRandomDomains, EveryMeshPassesTheChecker) {
 }
 
 // Domains outside the theory (star prisms with acute and reflex corners, tees with
-// re-entrant edges above 270 degrees, rotated: tests/support/outside_fixtures.hpp), on 2
+// re-entrant edges above 270 degrees, rotated: tests/support/outside_fixtures.hpp), on 3
 // ranks: exit 0 or 3, a valid, Delaunay, conforming mesh.
 TEST(MpiRandomDomains, OutsideTheTheoryEndsInAConformingMesh) {
   const char* env = std::getenv("PDR_MPI_CASES");
@@ -108,6 +110,26 @@ TEST(MpiRandomDomains, OutsideTheTheoryEndsInAConformingMesh) {
     RC_LOG() << "options:" << z.options() << "\n" << why;
     RC_FAIL("mpirun pdr mesh does not end in a conforming mesh outside the theory");
   }, 0x7E5);
+}
+
+// Stacked unions of rotated boxes (through-holes, ledges, walls at any dihedral, printed
+// with fewer digits: tests/support/union_fixtures.hpp) on 3 ranks, every message held
+// 200 µs: exit 0 or 3, a valid, Delaunay, conforming mesh.
+TEST(MpiRandomDomains, StackedUnionsEndInAConformingMesh) {
+  const char* env = std::getenv("PDR_MPI_CASES");
+  const int cases = env ? std::atoi(env) : 4;
+  refine::test::check_property("MpiStackedUnionsEndConforming", cases, [] {
+    const Plc plc = *pdr::test::gen_stacked_union();
+    const Point e = refine::test::box_extent(plc);
+    refine::test::Sizing z;
+    z.max_volume = e[0] * e[1] * e[2] / *rc::gen::inRange(2000, 8000);
+    const std::string why = failure(plc, z, true, " --inject-latency 200");
+    if (why.empty()) return;
+    std::ofstream("mpi-counterexample.poly")
+        << pdr::test::poly_text(plc, "shrunk counterexample of MpiRandomDomains stacked union\noptions:" + z.options());
+    RC_LOG() << "options:" << z.options() << "\n" << why;
+    RC_FAIL("mpirun pdr mesh does not end in a conforming mesh on a stacked union");
+  }, 0x51AC);
 }
 
 }  // namespace
