@@ -201,6 +201,8 @@ FacetMap map_facet(const PlcFacet& f, const std::vector<Point>& input, const Dom
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
     fit = least_squares_plane(distinct);
   }
+  fm.plane_origin = exact ? a : fit.centroid;
+  fm.plane_normal = exact ? Vec{n[0] / nn, n[1] / nn, n[2] / nn} : fit.normal;
   auto on_plane = [&](const Point& p, bool& tolerance) {
     tolerance = false;
     if (exact) {
@@ -337,10 +339,25 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
     return std::span<const std::uint32_t>(list.data() + start[v], list.data() + start[v + 1]);
   };
   m.face_in_facet.assign(topo.faces.size(), 0);
+  // The facets of a PLC meet only along their boundaries, so a mesh face lies in at most
+  // one: where several take it (two facets at a thin notch, each within the other's
+  // tolerance near their common segment), it goes to the one whose plane its corners lie
+  // nearest.
+  const auto distance = [&](const FacetMap& f, const Tri& t) {
+    double d = 0;
+    for (const std::uint32_t v : t) {
+      const Vec w = sub(mesh.points[v], f.plane_origin);
+      d = std::max(d, std::fabs(f.plane_normal[0] * w[0] + f.plane_normal[1] * w[1] +
+                                f.plane_normal[2] * w[2]));
+    }
+    return d;
+  };
   for (std::size_t fid = 0; fid < topo.faces.size(); ++fid) {
     const Tri& t = topo.faces[fid];
     const auto l0 = facets_of(t[0]), l1 = facets_of(t[1]), l2 = facets_of(t[2]);
     if (l0.empty() || l1.empty() || l2.empty()) continue;
+    std::optional<std::uint32_t> in;
+    double nearest = 0;
     for (std::uint32_t fi : l0) {
       if (!std::binary_search(l1.begin(), l1.end(), fi) ||
           !std::binary_search(l2.begin(), l2.end(), fi))
@@ -363,10 +380,13 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
             return locate_in_polygon(tri, q) != Where::Outside;
           }))
         continue;
-      f.faces.push_back(static_cast<std::uint32_t>(fid));
-      if (!m.face_in_facet[fid]) m.subfacets.push_back(static_cast<std::uint32_t>(fid));
-      m.face_in_facet[fid] = 1;
+      const double dist = distance(f, t);
+      if (!in || dist < nearest) in = fi, nearest = dist;
     }
+    if (!in) continue;
+    m.facets[*in].faces.push_back(static_cast<std::uint32_t>(fid));
+    m.subfacets.push_back(static_cast<std::uint32_t>(fid));
+    m.face_in_facet[fid] = 1;
   }
   std::sort(m.subfacets.begin(), m.subfacets.end());
 }

@@ -29,12 +29,17 @@
 // no face straddles a segment, so the centroid decides for a face in the facet; the corners
 // keep out the faces of a sliver across a segment between two facets a hair from coplanar
 // (each corner within tolerance of both planes), which would otherwise stack on F's
-// subfacets and count twice. F's region is built from its polygons with the
+// subfacets and count twice. Facets meet only along their boundaries, so a face lies in at
+// most one: when several facets take it (the two walls of a thin notch near its edge, each
+// within the other's tolerance and region there), it counts in the one whose plane (P, or
+// abc) lies nearest its farthest corner; a face claimed wrongly leaves that facet covered
+// more and its own less, which the exact areas still see. F's region is built from its polygons with the
 // mesh vertices found on each edge inserted in order: when the tolerance was needed, the
 // mesh faces tile that polygon exactly (and not the input one), so areas still compare
 // exactly; with exact vertices the two polygons coincide.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -71,6 +76,9 @@ struct FacetMap {
                                            // segment edges: faces there are not in the facet
   std::uint64_t tolerance_vertices = 0;    // on_plane vertices not exactly coplanar
   std::uint64_t ambiguous_faces = 0;       // on-plane faces with a centroid on an edge
+  Point plane_origin{};                    // the plane its vertices are measured against,
+  std::array<double, 3> plane_normal{};    // unit normal: a face that several facets would
+                                           // take goes to the one it lies nearest
 };
 
 struct DomainMap {
