@@ -7,13 +7,18 @@
 #include <random>
 #include <utility>
 
-// Boost.Geometry's rescaling policy trips GCC 12's -Wmaybe-uninitialized at -O3.
+// Boost.Geometry's rescaling policy trips GCC 12's -Wmaybe-uninitialized at -O3 (clang
+// has no such warning).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <boost/geometry.hpp>
 #include <boost/geometry/algorithms/point_on_surface.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 #include "support/outside_fixtures.hpp"
 #include "support/plc_fixtures.hpp"
