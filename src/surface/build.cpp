@@ -17,8 +17,6 @@
 
 #include <vector>
 
-#include "surface/anchor.hpp"
-
 
 namespace pdr::surface {
 
@@ -43,7 +41,7 @@ SurfaceMesh build_surface(const domain::PlcDomain& dom) {
     sf.separates = dom.facets[f].separates;
     sf.plane_group = F.plane_group;
     if (!F.is_face) continue;
-    sf.chart = make_chart(placement_plane(dom, f), plc.points);
+    sf.chart = make_chart(F.plane, plc.points);
     const auto base = static_cast<std::int32_t>(m.subfacets().size());
     for (const domain::FacetTri& T : F.tris) {
       Subfacet t;
