@@ -88,17 +88,10 @@ std::pair<double, double> on_segment(const P2d& p, const P2d& a, const P2d& b) {
   return {t, dist(p, {a[0] + t * dx, a[1] + t * dy})};
 }
 
+// Every corner of r at least min_corner_deg from 0 and 360 degrees (either orientation).
 bool corners_ok(const Ring& r, double min_corner_deg) {
-  const std::size_t n = r.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const P2d& a = r[(i + n - 1) % n];
-    const P2d& b = r[i];
-    const P2d& c = r[(i + 1) % n];
-    const double ux = a[0] - b[0], uy = a[1] - b[1], vx = c[0] - b[0], vy = c[1] - b[1];
-    const double angle = std::abs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy)) * 180 / std::numbers::pi;
-    if (angle < min_corner_deg) return false;
-  }
-  return true;
+  const std::vector<double> a = corner_angles(r);
+  return std::all_of(a.begin(), a.end(), [&](double x) { return x >= min_corner_deg && x <= 360 - min_corner_deg; });
 }
 
 // One level z of the stack: its vertices (snapped), and the rings that meet there.
