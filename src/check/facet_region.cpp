@@ -93,49 +93,77 @@ Where locate_in_polygon(const std::vector<P2>& poly, const Q2& q) {
   return inside ? Where::Inside : Where::Outside;
 }
 
-// Slabs: edge i is listed in every slab its y-range [min, max] meets. Slab of y:
-// floor((y - y0) * inv) clamped, monotone in y (as the grids of grid.hpp), so an edge whose
-// closed y-range holds q.y is in q.y's slab; the others do nothing in edge_step.
+// Slabs: edge i is listed in every slab its y-range [min, max] meets. The slabs' bounds are
+// every step-th of the polygon's distinct vertex y's, so each slab holds about `step`
+// vertices however they crowd (a subsegment chain refined toward a sharp corner puts
+// thousands of vertices in a millionth of the facet's height, where slabs of equal height
+// listed them all in one). Slab of y: the number of bounds at or below it, monotone in y
+// (as the grids of grid.hpp), so an edge whose closed y-range holds q.y is in a slab
+// between those of q.y's lower and upper bounds; the others do nothing in edge_step.
 PolygonSlabs::PolygonSlabs(const std::vector<P2>& poly) {
   const std::size_t n = poly.size();
   if (n == 0) return;
-  double lo = poly[0][1], hi = poly[0][1];
-  for (const P2& p : poly) lo = std::min(lo, p[1]), hi = std::max(hi, p[1]);
-  y0_ = lo;
+  std::vector<double> ys;
+  ys.reserve(n);
+  for (const P2& p : poly) ys.push_back(p[1]);
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
   auto range = [&](std::size_t i) {
     const double ya = poly[i][1], yb = poly[(i + 1) % n][1];
     return std::pair{slab(std::min(ya, yb)), slab(std::max(ya, yb))};
   };
-  // About one slab per two edges, halved until the edges' listings number at most 8 per
+  // Horizontal edges never toggle the ray's parity (both ends on one side of q.y, or both
+  // on it): they only say Boundary, and are kept apart, by y and then x.
+  std::vector<std::size_t> sloped;
+  for (std::size_t i = 0; i < n; ++i) {
+    const P2& a = poly[i];
+    const P2& b = poly[(i + 1) % n];
+    if (a[1] == b[1])
+      horizontal_.push_back({a[1], std::min(a[0], b[0]), std::max(a[0], b[0])});
+    else
+      sloped.push_back(i);
+  }
+  std::sort(horizontal_.begin(), horizontal_.end());
+  for (std::size_t k = 0; k < horizontal_.size(); ++k)
+    horizontal_[k].reach = k > 0 && horizontal_[k - 1].y == horizontal_[k].y
+                               ? std::max(horizontal_[k - 1].reach, horizontal_[k].xmax)
+                               : horizontal_[k].xmax;
+  // Two vertices per slab, the step doubled until the edges' listings number at most 8 per
   // edge (long edges, as in a comb, span many slabs): memory stays linear in the polygon.
-  for (slabs_ = static_cast<int>(std::clamp<std::size_t>(n / 2, 1, 1 << 16));; slabs_ /= 2) {
-    inv_ = hi > lo ? slabs_ / (hi - lo) : 0.0;
+  for (std::size_t step = 2;; step *= 2) {
+    bounds_.clear();
+    for (std::size_t k = step; k < ys.size(); k += step) bounds_.push_back(ys[k]);
     std::size_t listed = 0;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (const std::size_t i : sloped) {
       const auto [s0, s1] = range(i);
       listed += static_cast<std::size_t>(s1 - s0) + 1;
     }
-    if (slabs_ == 1 || listed <= 8 * n) break;
+    if (bounds_.empty() || listed <= 8 * n) break;
   }
-  start_.assign(static_cast<std::size_t>(slabs_) + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::size_t slabs = bounds_.size() + 1;
+  start_.assign(slabs + 1, 0);
+  for (const std::size_t i : sloped) {
     const auto [s0, s1] = range(i);
-    for (int s = s0; s <= s1; ++s) ++start_[s + 1];
+    for (std::size_t s = s0; s <= s1; ++s) ++start_[s + 1];
   }
-  for (int s = 0; s < slabs_; ++s) start_[s + 1] += start_[s];
+  for (std::size_t s = 0; s < slabs; ++s) start_[s + 1] += start_[s];
   edges_.resize(start_.back());
   std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (const std::size_t i : sloped) {
     const auto [s0, s1] = range(i);
-    for (int s = s0; s <= s1; ++s) edges_[fill[s]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t s = s0; s <= s1; ++s) edges_[fill[s]++] = static_cast<std::uint32_t>(i);
   }
 }
 
-int PolygonSlabs::slab(double y) const {
-  const double t = std::floor((y - y0_) * inv_);
-  if (!(t > 0)) return 0;  // also NaN
-  if (t >= slabs_ - 1) return slabs_ - 1;
-  return static_cast<int>(t);
+std::size_t PolygonSlabs::busiest() const {
+  std::size_t most = 0;
+  for (std::size_t s = 0; s + 1 < start_.size(); ++s) most = std::max(most, start_[s + 1] - start_[s]);
+  return most;
+}
+
+std::size_t PolygonSlabs::slab(double y) const {
+  return static_cast<std::size_t>(std::upper_bound(bounds_.begin(), bounds_.end(), y) -
+                                  bounds_.begin());
 }
 
 Where PolygonSlabs::locate(const std::vector<P2>& poly, const Q2& q) const {
@@ -144,18 +172,37 @@ Where PolygonSlabs::locate(const std::vector<P2>& poly, const Q2& q) const {
   // past the neighbouring doubles.
   const Interval sum = isum(q.y, q.n);
   if (!sum.finite()) return locate_in_polygon(poly, q);
-  const int s0 = slab(interval_detail::down(sum.lo / q.n)), s1 = slab(interval_detail::up(sum.hi / q.n));
-  // q.y within a few ulps of a slab boundary (vertices of an axis-aligned dyadic facet):
-  // the slabs around it, each edge once (in the first of them it is listed in).
-  if (s1 - s0 > 2) return locate_in_polygon(poly, q);
+  const double ylo = interval_detail::down(sum.lo / q.n), yhi = interval_detail::up(sum.hi / q.n);
+  // On a horizontal edge: its y is q.y exactly, and q.x lies between its ends. The edges at
+  // one y are sorted by their left ends: the candidates start at or left of q.x and reach
+  // it (interior-disjoint edges, as a simple polygon's: the last one or two).
+  const Interval xsum = isum(q.x, q.n);
+  if (!xsum.finite()) return locate_in_polygon(poly, q);
+  const double xhi = interval_detail::up(xsum.hi / q.n), xlo = interval_detail::down(xsum.lo / q.n);
+  auto h = std::lower_bound(horizontal_.begin(), horizontal_.end(), Horizontal{ylo, -HUGE_VAL, -HUGE_VAL});
+  while (h != horizontal_.end() && h->y <= yhi) {
+    const double y = h->y;
+    const auto row_end = std::upper_bound(h, horizontal_.end(), Horizontal{y, HUGE_VAL, HUGE_VAL});
+    if (compare(q, y, 1) == Sign::Zero) {
+      auto c = std::upper_bound(h, row_end, Horizontal{y, xhi, HUGE_VAL});
+      while (c != h) {
+        --c;
+        if (c->reach < xlo) break;
+        if (to_int(compare(q, c->xmin, 0)) * to_int(compare(q, c->xmax, 0)) <= 0)
+          return Where::Boundary;
+      }
+    }
+    h = row_end;
+  }
+  const std::size_t s0 = slab(ylo), s1 = slab(yhi);
   bool inside = false;
   const std::size_t n = poly.size();
-  for (int s = s0; s <= s1; ++s)
+  for (std::size_t s = s0; s <= s1; ++s)
     for (std::size_t k = start_[s]; k < start_[s + 1]; ++k) {
       const std::uint32_t i = edges_[k];
       const P2& a = poly[i];
       const P2& b = poly[(i + 1) % n];
-      if (s > s0 && slab(std::min(a[1], b[1])) < s) continue;  // listed in slab s - 1 too
+      if (s > s0 && slab(std::min(a[1], b[1])) < s) continue;  // met in an earlier slab
       if (edge_step(a, b, q, inside)) return Where::Boundary;
     }
   return inside ? Where::Inside : Where::Outside;

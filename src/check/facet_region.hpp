@@ -41,19 +41,30 @@ enum class Where : std::uint8_t { Inside, Outside, Boundary };
 
 Where locate_in_polygon(const std::vector<P2>& polygon, const Q2& q);
 
-// A polygon's edges bucketed by horizontal slabs of y: locate() visits only the edges of
-// q's slab, with the same exact decisions as locate_in_polygon (a polygon whose edges are
-// the subsegment chains of a finely meshed facet has thousands of them).
+// A polygon's edges bucketed by horizontal slabs of y, each holding a few of its vertices
+// however they crowd: locate() visits only the edges of q's slabs, with the same exact
+// decisions as locate_in_polygon (a polygon whose edges are the subsegment chains of a
+// finely meshed facet has thousands of them).
 class PolygonSlabs {
  public:
   explicit PolygonSlabs(const std::vector<P2>& polygon);
   Where locate(const std::vector<P2>& polygon, const Q2& q) const;
-  std::size_t listings() const { return edges_.size(); }  // at most 8 per edge
+  // The sloped edges' listings (at most 8 per edge) and the most in one slab; horizontal
+  // edges are kept apart.
+  std::size_t listings() const { return edges_.size(); }
+  std::size_t busiest() const;
 
  private:
-  int slab(double y) const;
-  double y0_ = 0, inv_ = 0;
-  int slabs_ = 1;
+  std::size_t slab(double y) const;
+  struct Horizontal {
+    double y, xmin, xmax;
+    double reach = 0;  // the largest xmax of its row up to it (edges of a row may overlap)
+    bool operator<(const Horizontal& o) const {
+      return y != o.y ? y < o.y : xmin != o.xmin ? xmin < o.xmin : xmax < o.xmax;
+    }
+  };
+  std::vector<Horizontal> horizontal_;  // sorted by y, xmin, xmax
+  std::vector<double> bounds_;  // ascending: slab s holds y in [bounds_[s-1], bounds_[s])
   std::vector<std::size_t> start_{0, 0};
   std::vector<std::uint32_t> edges_;
 };

@@ -243,7 +243,7 @@ RC_GTEST_PROP(FacetRegion, SlabsLocateAsTheFullScan, ()) {
   }
 }
 
-// Combs (long vertical teeth: every edge spans many slabs, so the slab count is halved
+// Combs (long vertical teeth: every edge spans many slabs, so the slabs widen
 // until the listings stay linear) and axis-aligned dyadic polygons (vertices and edge
 // midpoints exactly on slab boundaries: the query's interval meets two slabs), queried
 // on a dyadic lattice, at vertices, edge midpoints and centroids.
@@ -268,6 +268,33 @@ RC_GTEST_PROP(FacetRegion, SlabsLocateAsTheFullScanOnCombs, ()) {
     agree({{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
     agree(Q2::centroid(poly[i], poly[j], poly[l]));
     agree(Q2::at({*rc::gen::inRange(-8, 16 * teeth + 8) / 8.0, *rc::gen::inRange(-8, 8 * int(h) + 16) / 8.0}));
+  }
+}
+
+// A facet refined toward a sharp corner (a repair cascade toward a thin notch's tip: 8
+// vertices per octave from 1 down to 2^-50 on both sides of a wedge of 1 to 10 degrees,
+// turned by a random angle): the slabs hold a few vertices each however they crowd, so a
+// query near the tip visits a few edges, not the whole chain, and decides as the full scan.
+RC_GTEST_PROP(FacetRegion, SlabsStayFewEdgesOnGradedChains, ()) {
+  const double wedge = *rc::gen::inRange(1, 11) * M_PI / 180;
+  const double turn = *rc::gen::inRange(0, 3600) * M_PI / 1800;
+  const int octaves = *rc::gen::inRange(10, 51);
+  auto at = [&](double r, double a) { return P2{r * std::cos(turn + a), r * std::sin(turn + a)}; };
+  std::vector<P2> poly = {at(0, 0)};
+  for (int k = 8 * octaves; k >= 0; --k) poly.push_back(at(std::exp2(-k / 8.0), 0));
+  for (int k = 0; k <= 8 * octaves; ++k) poly.push_back(at(std::exp2(-k / 8.0), wedge));
+  const std::size_t n = poly.size();
+  const PolygonSlabs slabs(poly);
+  RC_ASSERT(slabs.listings() <= 8 * n);
+  RC_ASSERT(slabs.busiest() <= 16);
+  auto agree = [&](const Q2& q) { RC_ASSERT(slabs.locate(poly, q) == locate_in_polygon(poly, q)); };
+  for (int k = 0; k < 100; ++k) {
+    const auto i = *rc::gen::inRange<std::size_t>(0, n), j = *rc::gen::inRange<std::size_t>(0, n),
+               l = *rc::gen::inRange<std::size_t>(0, n);
+    agree(Q2::at(poly[i]));
+    agree({{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
+    agree(Q2::centroid(poly[i], poly[j], poly[l]));
+    agree(Q2::centroid(poly[i], poly[(i + 1) % n], poly[(i + n - 1) % n]));
   }
 }
 
