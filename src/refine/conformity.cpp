@@ -221,13 +221,8 @@ std::vector<TetId> reflag_all(VolumeMesh& m, std::size_t& conflicts) {
 
 void ConformityTracker::start(const VolumeMesh& m) {
   if (m.missing_subfacets.empty() && m.missing_subsegments.empty()) return;
-  // Each listed once by build_initial: no duplicate test needed.
-  for (const std::uint32_t id : m.missing_subsegments) {
-    const Subsegment& x = m.surf.subsegment(id);
-    missing_.subsegments.push_back({id, {x.v[0], x.v[1], 0}, kNone, kNoTet});
-  }
-  for (const std::uint32_t id : m.missing_subfacets)
-    missing_.subfacets.push_back({id, m.surf.subfacet(id).v, kNone, kNoTet});
+  for (const std::uint32_t id : m.missing_subsegments) add(true, m, id);
+  for (const std::uint32_t id : m.missing_subfacets) add(false, m, id);
   const TetStore& s = m.dt.store();
   for (TetId t = 0; t < s.slots(); ++t)
     if (s.is_alive(t)) dirty_.push_back(t);
@@ -246,26 +241,62 @@ const EncroachedLists& ConformityTracker::doomed(const VolumeMesh& m, const Cavi
 
 bool ConformityTracker::committed(const VolumeMesh& m, VertexId v, std::span<const TetId> star) {
   bool fresh = false;  // an element listed that was not (a reused id counts as new)
-  for (const Encroached& e : doomed_.subsegments) fresh = add_subsegment(m, e.id, missing_) || fresh;
-  for (const Encroached& e : doomed_.subfacets) fresh = add_subfacet(m, e.id, missing_) || fresh;
-  fresh = missing_at(m, v, star, missing_) || fresh;
+  for (const Encroached& e : doomed_.subsegments) fresh = add(true, m, e.id) || fresh;
+  for (const Encroached& e : doomed_.subfacets) fresh = add(false, m, e.id) || fresh;
+  found_.subsegments.clear();
+  found_.subfacets.clear();
+  missing_at(m, v, star, found_);
+  for (const Encroached& e : found_.subsegments) fresh = add(true, m, e.id) || fresh;
+  for (const Encroached& e : found_.subfacets) fresh = add(false, m, e.id) || fresh;
   if (fresh || broken()) dirty_.insert(dirty_.end(), star.begin(), star.end());
   return fresh;
 }
 
 std::optional<ConformityTracker::Next> ConformityTracker::next(const SurfaceMesh& s) {
-  while (!missing_.subsegments.empty() || !missing_.subfacets.empty()) {
-    const bool seg = !missing_.subsegments.empty();
-    std::vector<Encroached>& list = seg ? missing_.subsegments : missing_.subfacets;
-    const Encroached e = list.back();
-    list.pop_back();
+  while (!segments_.list.empty() || !facets_.list.empty()) {
+    const bool seg = !segments_.list.empty();
+    const Encroached e = (seg ? segments_ : facets_).pop();
     if (seg ? still_subsegment(s, e) : still_subfacet(s, e)) return Next{seg, e};
   }
   return std::nullopt;
 }
 
 void ConformityTracker::wait_again(const Next& n) {
-  (n.subsegment ? missing_.subsegments : missing_.subfacets).push_back(n.e);
+  (n.subsegment ? segments_ : facets_).push(n.e);
+}
+
+bool ConformityTracker::Missing::add(std::uint32_t id, const std::array<std::uint32_t, 3>& v) {
+  if (const auto it = at.find(id); it != at.end()) {
+    Encroached& e = list[it->second];
+    if (e.v == v) return false;
+    e.v = v;
+    return true;
+  }
+  push({id, v, kNone, kNoTet});
+  return true;
+}
+
+void ConformityTracker::Missing::push(const Encroached& e) {
+  const auto [it, fresh] = at.try_emplace(e.id, list.size());
+  if (fresh)
+    list.push_back(e);
+  else
+    list[it->second] = e;  // listed again meanwhile: once
+}
+
+Encroached ConformityTracker::Missing::pop() {
+  const Encroached e = list.back();
+  list.pop_back();
+  at.erase(e.id);
+  return e;
+}
+
+bool ConformityTracker::add(bool subsegment, const VolumeMesh& m, std::uint32_t id) {
+  if (subsegment) {
+    const Subsegment& x = m.surf.subsegment(id);
+    return segments_.add(id, {x.v[0], x.v[1], 0});
+  }
+  return facets_.add(id, m.surf.subfacet(id).v);
 }
 
 std::vector<TetId> ConformityTracker::restore(VolumeMesh& m) {

@@ -33,8 +33,11 @@
 // reasons (refine/seq_refinement.hpp unsplit).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "delaunay/cavity.hpp"
@@ -107,7 +110,19 @@ class ConformityTracker {
   std::vector<Next> abandon(VolumeMesh& m);
 
  private:
-  EncroachedLists missing_, doomed_;
+  // A list of missing elements with an index by id (an element is listed once; a reused
+  // id with other vertices replaces its entry): thousands can be missing at once in a
+  // cascade of repairs, and a search of the list per element made that quadratic.
+  struct Missing {
+    std::vector<Encroached> list;
+    std::unordered_map<std::uint32_t, std::size_t> at;  // id -> its index in list
+    bool add(std::uint32_t id, const std::array<std::uint32_t, 3>& v);  // true: new or changed
+    void push(const Encroached& e);
+    Encroached pop();
+  };
+  bool add(bool subsegment, const VolumeMesh& m, std::uint32_t id);
+  Missing segments_, facets_;
+  EncroachedLists doomed_, found_;
   std::vector<TetId> dirty_;
 };
 

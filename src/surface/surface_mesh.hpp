@@ -91,6 +91,8 @@ struct SurfaceFacet {
   std::size_t line = 0;                 // source line of the facet, for diagnostics
   bool separates = true;                // domain::DomainFacet::separates: Ω on one side
                                         // only (false: an internal facet, Ω on both)
+  double gap = 0;                       // the largest distance of its input vertices from
+                                        // the chart's plane (0 when exactly planar)
 };
 
 class SurfaceMesh {

@@ -29,10 +29,12 @@ namespace pdr::refine::test {
 struct Sizing {
   std::optional<double> max_volume, size;
   bool graded = false;  // --surface-sizing graded (else auto)
+  std::size_t max_vertices = 0;  // --max-vertices (0: derived)
   std::string options() const {
     std::ostringstream s;
     s.precision(17);
     if (max_volume) s << " --max-volume " << *max_volume;
+    if (max_vertices != 0) s << " --max-vertices " << max_vertices;
     if (size) s << " --size " << *size;
     if (graded) s << " --surface-sizing graded";
     return s.str();
@@ -190,6 +192,7 @@ inline int run_mesh(const Plc& plc, const Sizing& z, bool audit, nlohmann::json&
   args.options.audit = audit;
   args.options.max_volume = z.max_volume;
   args.options.size = z.size;
+  args.options.max_vertices = z.max_vertices;
   if (z.graded) args.surface_sizing = surface::SurfaceSizing::Graded;
   app::Summary s;
   try {
