@@ -1,6 +1,9 @@
 // Subfacets a tet asks to refine (issue #3); see refine/flat.hpp.
 #include "refine/flat.hpp"
 
+#include <cmath>
+#include <sstream>
+
 #include "geom/construct.hpp"
 #include "geom/encroach.hpp"
 
@@ -50,6 +53,22 @@ std::optional<std::uint32_t> encroached_subfacet_face(const VolumeMesh& m, TetId
 
 std::optional<std::uint32_t> flat_subfacet_face(const VolumeMesh& m, TetId t) {
   return pick(m, t, true).flat;
+}
+
+std::string within_planarity_gap(const SurfaceMesh& s, std::uint32_t f) {
+  const Subfacet& x = s.subfacet(f);
+  const double gap = s.facets[x.facet].gap;
+  if (gap == 0) return {};
+  const double r = std::sqrt(
+      construct::triangle_circumradius2(s.point(x.v[0]), s.point(x.v[1]), s.point(x.v[2])));
+  if (r >= gap) return {};
+  std::ostringstream os;
+  os.precision(6);
+  os << "refine.flat: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2] << ") of "
+     << s.facet_name(x.facet)
+     << " under a tet with its four vertices on the facet has circumradius " << r << ", below the facet's planarity gap " << gap
+     << " (its input vertices lie that far off its plane): the tet is the facet's own bend";
+  return os.str();
 }
 
 }  // namespace pdr::refine

@@ -35,10 +35,18 @@
 // tests/regress/outside-*torus*). The repair's splits keep the concentric shells. (2)
 // can be geometric too (subfacets of two facets at a sharp dihedral encroach each other
 // at every scale), so the floor applies to it.
+// A repair of (1) is refused below the facet's planarity gap (SurfaceFacet::gap: how far
+// its input vertices lie off the plane its new vertices go on; 0 on exact facets). The
+// facet's segments run up to the gap off that plane, so at that scale the subfacets next to
+// a segment are tilted by gap / size: a tet with its four vertices on the facet is then the
+// facet's own bend, not rounding, and each repair made another beside the last (a 3-degree
+// notch printed with 7 digits: 72,000 repairs around a few vertices of one wall at
+// circumradii of 1e-9 to 4e-12, and no end). Such a tet stays, listed.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "refine/volume_mesh.hpp"
 
@@ -58,5 +66,9 @@ struct SubfacetPicks {
   std::optional<std::uint32_t> flat, any;
 };
 SubfacetPicks subfacets_to_refine(const VolumeMesh& m, TetId t);
+
+// Why the repair of a flat tet on subfacet f is refused: f's circumradius is below its
+// facet's planarity gap (above); empty when it may go in.
+std::string within_planarity_gap(const SurfaceMesh& s, std::uint32_t f);
 
 }  // namespace pdr::refine

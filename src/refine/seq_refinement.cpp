@@ -208,28 +208,6 @@ class Refiner {
     return below_precision(f);
   }
 
-  // Why a flat tet on subfacet f is the facet's own bend rather than rounding: f is
-  // smaller than the distance by which the facet's input vertices miss its plane
-  // (SurfaceFacet::gap, 0 on exact facets). New vertices go on that plane, and the
-  // facet's segments run off it by up to the gap, so at that scale the subfacets next to a
-  // segment are tilted by gap / size, and each repair makes another such tet beside the
-  // last; empty when the repair may go in.
-  std::string within_gap(std::uint32_t f) const {
-    const surface::Subfacet& x = m_.surf.subfacet(f);
-    const double gap = m_.surf.facets[x.facet].gap;
-    if (gap == 0) return {};
-    const double r = std::sqrt(construct::triangle_circumradius2(
-        m_.surf.point(x.v[0]), m_.surf.point(x.v[1]), m_.surf.point(x.v[2])));
-    if (r >= gap) return {};
-    std::ostringstream os;
-    os.precision(6);
-    os << "refine.flat: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2] << ") of "
-       << m_.surf.facet_name(x.facet) << " under a tet with its four vertices on the facet has circumradius "
-       << r << ", below the facet's planarity gap " << gap
-       << " (its input vertices lie that far off its plane): the tet is the facet's own bend";
-    return os.str();
-  }
-
   // Why subfacet f's circumcenter cannot be placed in doubles (kPrecisionFloor); empty
   // when it can.
   std::string below_precision(std::uint32_t f) const {
@@ -971,14 +949,15 @@ class Refiner {
 
   void refine_tet(TetId t) {
     // issue #3: refine/flat.hpp; a flat tet's repair (rule 1) is not held by the repair
-    // floor, only by what doubles can place (a 3-degree notch printed with 7 digits made
-    // 72,000 flat repairs among edges of 1e-14 before this).
+    // floor, only by what doubles can place and by the facet's planarity gap (refine/flat.hpp:
+    // a 3-degree notch printed with 7 digits made 72,000 flat repairs at circumradii of
+    // 1e-9 to 4e-12 before this, and never ended).
     if (const SubfacetPicks f = subfacets_to_refine(m_, t); f.flat) {
       if (std::string why = below_precision(*f.flat); !why.empty()) {
         refuse(t, std::move(why));
         return;
       }
-      if (std::string why = within_gap(*f.flat); !why.empty()) {
+      if (std::string why = within_planarity_gap(m_.surf, *f.flat); !why.empty()) {
         refuse(t, std::move(why));
         return;
       }
