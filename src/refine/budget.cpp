@@ -3,7 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <sstream>
+
+#include <unistd.h>
 
 #include "mesh/physical_memory.hpp"
 #include "refine/seq_refinement.hpp"
@@ -42,6 +46,18 @@ VertexBudget::VertexBudget(std::span<const Point> points, const RefineOptions& o
     const double cap = 1000.0 + 64.0 * static_cast<double>(points.size()) + 16.0 * box / (u * u * u);
     cap_ = std::min(static_cast<std::size_t>(std::min(cap, 2.0e9)), memory_vertex_limit());
   }
+  memory_limit_ = physical_memory_bytes() / 2;
+}
+
+double resident_bytes() {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (f == nullptr) return 0;
+  unsigned long size = 0, resident = 0;
+  const int read = std::fscanf(f, "%lu %lu", &size, &resident);
+  std::fclose(f);
+  const long page = sysconf(_SC_PAGE_SIZE);
+  if (read != 2 || page <= 0) return 0;
+  return static_cast<double>(resident) * static_cast<double>(page);
 }
 
 double VertexBudget::resolution_at(double d) const {
@@ -49,6 +65,22 @@ double VertexBudget::resolution_at(double d) const {
 }
 
 bool VertexBudget::reached(std::size_t vertices, std::string& why) const {
+  if (memory_why_.empty() && memory_limit_ > 0 && (++calls_ & 0xFFF) == 0) {
+    const double resident = resident_bytes();
+    if (resident > memory_limit_) {
+      std::ostringstream os;
+      os.precision(3);
+      os << "refine.memory: the run holds " << resident / (1 << 30) << " GiB at " << vertices
+         << " vertices, past half the machine's memory (" << memory_limit_ / (1 << 30)
+         << " GiB); the domain is probably outside the theory, or the sizes ask for more "
+            "than the machine holds";
+      memory_why_ = os.str();
+    }
+  }
+  if (!memory_why_.empty()) {
+    why = memory_why_;
+    return true;
+  }
   if (vertices < cap_) return false;
   why = "refine.cap: " + std::to_string(vertices) + " vertices reached the cap of " +
         std::to_string(cap_) +

@@ -41,8 +41,13 @@ class VertexBudget {
   // cbrt(V), the box's share without a finite d).
   double resolution_at(double d) const;
   std::size_t cap() const { return cap_; }
-  // True when `vertices` reached the cap; `why` then says so (refine.cap: ...).
+  // True when `vertices` reached the cap, or when the process's resident memory, read at
+  // every 4096th call, passed the memory limit (half the machine's memory: the cap counts
+  // kRefineVertexBytes a vertex, and a run outside the theory can hold more, its refused
+  // tets' reasons among it); `why` then says so (refine.cap: ... or refine.memory: ...),
+  // and every later call says the same.
   bool reached(std::size_t vertices, std::string& why) const;
+  void set_memory_limit(double bytes) { memory_limit_ = bytes; }  // 0: none
 
  private:
   double resolution_ = 0;
@@ -50,6 +55,12 @@ class VertexBudget {
   double box_share_ = 0;  // cbrt(box volume) / 8
   std::size_t cap_ = 0;
   bool user_cap_ = false;
+  double memory_limit_ = 0;
+  mutable std::size_t calls_ = 0;
+  mutable std::string memory_why_;  // set once the limit was passed
 };
+
+// This process's resident memory in bytes (/proc/self/statm; 0 when unknown).
+double resident_bytes();
 
 }  // namespace pdr::refine

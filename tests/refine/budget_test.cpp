@@ -48,5 +48,25 @@ TEST(VertexBudget, UserCapIsKept) {
   EXPECT_NE(why.find("--max-vertices"), std::string::npos) << why;
 }
 
+// A run can hold more than the cap's kRefineVertexBytes a vertex (outside the theory, the
+// refused tets' reasons among it: a lateral repair cascade held 2.9 KB a vertex): the budget
+// reads the resident memory every 4096th call and stops once it is past the limit, for good.
+TEST(VertexBudget, ResidentMemoryPastTheLimitStops) {
+  EXPECT_GT(resident_bytes(), 0.0);
+  RefineOptions o;
+  o.d = 0.25;
+  VertexBudget b(kBox, o);
+  std::string why;
+  for (int i = 0; i < 5000; ++i) ASSERT_FALSE(b.reached(10, why)) << why;  // half the machine
+  b.set_memory_limit(1);  // one byte: every process is past it
+  bool stopped = false;
+  for (int i = 0; i < 4096 && !stopped; ++i) stopped = b.reached(10, why);
+  ASSERT_TRUE(stopped);
+  EXPECT_NE(why.find("refine.memory"), std::string::npos) << why;
+  std::string again;
+  EXPECT_TRUE(b.reached(10, again));
+  EXPECT_EQ(again, why);
+}
+
 }  // namespace
 }  // namespace pdr::refine
