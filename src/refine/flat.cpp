@@ -66,7 +66,8 @@ std::string within_planarity_gap(const SurfaceMesh& s, std::uint32_t f) {
   os.precision(6);
   os << "refine.flat: subfacet (" << x.v[0] << ", " << x.v[1] << ", " << x.v[2] << ") of "
      << s.facet_name(x.facet)
-     << " under a tet with its four vertices on the facet has circumradius " << r << ", below the facet's planarity gap " << gap
+     << " under a tet with its four vertices on the facet has circumradius " << r
+     << ", below the facet's planarity gap " << gap
      << " (its input vertices lie that far off its plane): the tet is the facet's own bend";
   return os.str();
 }

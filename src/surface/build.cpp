@@ -48,12 +48,11 @@ SurfaceMesh build_surface(const domain::PlcDomain& dom) {
       const Point& o = sf.chart.origin;
       const Point& n = sf.chart.normal;
       const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      for (const domain::FacetTri& T : F.tris)
-        for (const std::uint32_t v : T.v) {
-          const Point& p = plc.points[v];
-          const double h = n[0] * (p[0] - o[0]) + n[1] * (p[1] - o[1]) + n[2] * (p[2] - o[2]);
-          sf.gap = std::max(sf.gap, std::abs(h) / len);
-        }
+      for (const std::uint32_t v : F.vertices) {
+        const Point& p = plc.points[v];
+        const double h = n[0] * (p[0] - o[0]) + n[1] * (p[1] - o[1]) + n[2] * (p[2] - o[2]);
+        sf.gap = std::max(sf.gap, std::abs(h) / len);
+      }
     }
     const auto base = static_cast<std::int32_t>(m.subfacets().size());
     for (const domain::FacetTri& T : F.tris) {

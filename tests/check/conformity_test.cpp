@@ -218,6 +218,20 @@ TEST(FacetRegion, NonConvexPolygon) {
   EXPECT_EQ(r.locate(Q2::centroid({0, 0}, {1, 0}, {0, 1})), Where::Inside);
 }
 
+// The slab index decides q as the scan of every edge does.
+void slabs_agree(const PolygonSlabs& slabs, const std::vector<P2>& poly, const Q2& q) {
+  RC_ASSERT(slabs.locate(poly, q) == locate_in_polygon(poly, q));
+}
+
+// ... at vertex i, at the midpoint of its edge to i + 1, and at the centroid of i, j, l.
+void slabs_agree_at(const PolygonSlabs& slabs, const std::vector<P2>& poly, std::size_t i,
+                    std::size_t j, std::size_t l) {
+  const std::size_t n = poly.size();
+  slabs_agree(slabs, poly, Q2::at(poly[i]));
+  slabs_agree(slabs, poly, {{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
+  slabs_agree(slabs, poly, Q2::centroid(poly[i], poly[j], poly[l]));
+}
+
 // The slab index visits only the edges of the query's slab and must decide as the scan of
 // every edge does: star polygons of up to 2,000 vertices (many at one y, horizontal edges,
 // vertices repeated along chains as on a meshed facet), queried at vertices, edge
@@ -233,13 +247,10 @@ RC_GTEST_PROP(FacetRegion, SlabsLocateAsTheFullScan, ()) {
     poly.push_back({r * std::cos(a), y});
   }
   const PolygonSlabs slabs(poly);
-  auto agree = [&](const Q2& q) { RC_ASSERT(slabs.locate(poly, q) == locate_in_polygon(poly, q)); };
   for (int k = 0; k < 200; ++k) {
     const auto i = *rc::gen::inRange(0, n), j = *rc::gen::inRange(0, n), l = *rc::gen::inRange(0, n);
-    agree(Q2::at(poly[i]));
-    agree({{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
-    agree(Q2::centroid(poly[i], poly[j], poly[l]));
-    agree(Q2::at({*rc::gen::inRange(-2100, 2100) / 1000.0, *rc::gen::inRange(-2100, 2100) / 1000.0}));
+    slabs_agree_at(slabs, poly, i, j, l);
+    slabs_agree(slabs, poly, Q2::at({*rc::gen::inRange(-2100, 2100) / 1000.0, *rc::gen::inRange(-2100, 2100) / 1000.0}));
   }
 }
 
@@ -260,14 +271,11 @@ RC_GTEST_PROP(FacetRegion, SlabsLocateAsTheFullScanOnCombs, ()) {
   const std::size_t n = poly.size();
   const PolygonSlabs slabs(poly);
   RC_ASSERT(slabs.listings() <= 8 * n);
-  auto agree = [&](const Q2& q) { RC_ASSERT(slabs.locate(poly, q) == locate_in_polygon(poly, q)); };
   for (int k = 0; k < 100; ++k) {
     const auto i = *rc::gen::inRange<std::size_t>(0, n), j = *rc::gen::inRange<std::size_t>(0, n),
                l = *rc::gen::inRange<std::size_t>(0, n);
-    agree(Q2::at(poly[i]));
-    agree({{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
-    agree(Q2::centroid(poly[i], poly[j], poly[l]));
-    agree(Q2::at({*rc::gen::inRange(-8, 16 * teeth + 8) / 8.0, *rc::gen::inRange(-8, 8 * int(h) + 16) / 8.0}));
+    slabs_agree_at(slabs, poly, i, j, l);
+    slabs_agree(slabs, poly, Q2::at({*rc::gen::inRange(-8, 16 * teeth + 8) / 8.0, *rc::gen::inRange(-8, 8 * int(h) + 16) / 8.0}));
   }
 }
 
@@ -287,14 +295,11 @@ RC_GTEST_PROP(FacetRegion, SlabsStayFewEdgesOnGradedChains, ()) {
   const PolygonSlabs slabs(poly);
   RC_ASSERT(slabs.listings() <= 8 * n);
   RC_ASSERT(slabs.busiest() <= 16);
-  auto agree = [&](const Q2& q) { RC_ASSERT(slabs.locate(poly, q) == locate_in_polygon(poly, q)); };
   for (int k = 0; k < 100; ++k) {
     const auto i = *rc::gen::inRange<std::size_t>(0, n), j = *rc::gen::inRange<std::size_t>(0, n),
                l = *rc::gen::inRange<std::size_t>(0, n);
-    agree(Q2::at(poly[i]));
-    agree({{poly[i][0], poly[(i + 1) % n][0], 0}, {poly[i][1], poly[(i + 1) % n][1], 0}, 2});
-    agree(Q2::centroid(poly[i], poly[j], poly[l]));
-    agree(Q2::centroid(poly[i], poly[(i + 1) % n], poly[(i + n - 1) % n]));
+    slabs_agree_at(slabs, poly, i, j, l);
+    slabs_agree(slabs, poly, Q2::centroid(poly[i], poly[(i + 1) % n], poly[(i + n - 1) % n]));
   }
 }
 
