@@ -1,9 +1,11 @@
 // Rotation copies around sharp axes; see refine/axis_zones.hpp.
 #include "refine/axis_zones.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geom/filter_kit.hpp"
+#include "geom/predicates.hpp"
 
 #include "surface/chart.hpp"
 
@@ -23,27 +25,34 @@ Point perpendicular(const Point& x, const Point& u) {
   return w;
 }
 
-// Whether the side e of facet f along segment s holds the strip of the zone: every other
-// segment of f at an end of s, on that side, leaves the end at 90 degrees or more from s
-// (an acute one cuts the strip off near that end, as the third side of a triangle facet
-// does). The cosine is floating point with a margin of 1e-9: it chooses where copies go,
-// and classifies a right angle bent by rounding as right; it decides nothing about T.
-bool holds_strip(const surface::SurfaceMesh& m, std::uint32_t f, std::uint32_t s, const Point& e,
-                 const Point& u) {
+// Whether the side e of facet f's wall along segment s holds the strip of the zone: every
+// other segment of the wall (f's coplanar group, less the edges between its own facets) at
+// an end of s, on that side, leaves the end at 90 degrees or more from s (an acute one cuts
+// the strip off near that end, as the third side of a lone triangle facet does). The
+// cosine is floating point with a margin of 1e-9: it chooses where copies go, and
+// classifies a right angle bent by rounding as right; it decides nothing about T.
+bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& wall,
+                 std::uint32_t s, const Point& e, const Point& u) {
   const surface::SurfaceSegment& axis = m.segments[s];
-  for (const std::uint32_t o : m.facets[f].segments) {
-    if (o == s) continue;
-    const surface::SurfaceSegment& g = m.segments[o];
-    for (const auto& [end, sign] : {std::pair{axis.a, 1.0}, std::pair{axis.b, -1.0}}) {
-      if (g.a != end && g.b != end) continue;
-      Point d = sub(m.point(g.a == end ? g.b : g.a), m.point(end));
-      const double n = std::sqrt(dot(d, d));
-      if (n == 0) continue;
-      for (double& c : d) c /= n;
-      if (dot(d, e) <= 0) continue;  // on the facet's other side of s
-      if (sign * dot(d, u) > 1e-9) return false;
+  const auto in_wall = [&](std::uint32_t g) {
+    return std::find(wall.begin(), wall.end(), g) != wall.end();
+  };
+  for (const std::uint32_t f : wall)
+    for (const std::uint32_t o : m.facets[f].segments) {
+      if (o == s) continue;
+      const surface::SurfaceSegment& g = m.segments[o];
+      if (g.facets.size() >= 2 && std::all_of(g.facets.begin(), g.facets.end(), in_wall))
+        continue;  // a crease between two pieces of the wall
+      for (const auto& [end, sign] : {std::pair{axis.a, 1.0}, std::pair{axis.b, -1.0}}) {
+        if (g.a != end && g.b != end) continue;
+        Point d = sub(m.point(g.a == end ? g.b : g.a), m.point(end));
+        const double n = std::sqrt(dot(d, d));
+        if (n == 0) continue;
+        for (double& c : d) c /= n;
+        if (dot(d, e) <= 0) continue;  // on the wall's other side of s
+        if (sign * dot(d, u) > 1e-9) return false;
+      }
     }
-  }
   return true;
 }
 
@@ -51,6 +60,25 @@ bool holds_strip(const surface::SurfaceMesh& m, std::uint32_t f, std::uint32_t s
 
 AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& cylinders,
                      double cap) {
+  // Walls: coplanar groups whose facets lie exactly on one plane (every corner of each on
+  // the plane of the group's first facet); a group coplanar only within the tolerance has
+  // no one plane for the copies, and each of its facets stays a wall of its own.
+  std::vector<std::uint8_t> exact(m.facets.size(), 1);
+  for (std::uint32_t f = 0; f < m.facets.size(); ++f) {
+    if (!m.facets[f].is_face) continue;
+    const surface::FacetChart& ch = m.facets[m.facets[f].plane_group].chart;
+    for (const std::uint32_t s : m.facets[f].segments)
+      for (const std::uint32_t v : {m.segments[s].a, m.segments[s].b})
+        if (orient3d(ch.origin, ch.t1, ch.t2, m.point(v)) != Sign::Zero)
+          exact[m.facets[f].plane_group] = 0;
+  }
+  wall_key_.assign(m.facets.size(), 0);
+  walls_of_.assign(m.facets.size(), {});
+  for (std::uint32_t f = 0; f < m.facets.size(); ++f) {
+    if (!m.facets[f].is_face) continue;
+    wall_key_[f] = exact[m.facets[f].plane_group] ? m.facets[f].plane_group : f;
+    walls_of_[wall_key_[f]].push_back(f);
+  }
   for (std::uint32_t s = 0; s < cylinders.size() && s < m.segments.size(); ++s) {
     if (!(cylinders[s] > 0)) continue;
     const surface::SurfaceSegment& seg = m.segments[s];
@@ -75,7 +103,7 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
           if (v == chain[0] || v == chain[1]) continue;
           const Point e = perpendicular(sub(m.point(v), z.a), z.u);
           if (dot(e, e) > 0) z.walls.push_back({f, e});
-          strips = strips && holds_strip(m, f, s, e, z.u);
+          strips = strips && holds_strip(m, wall(f), s, e, z.u);
         }
       }
     }
@@ -86,8 +114,12 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
   facet_zones_.assign(m.facets.size(), {});
   for (std::uint32_t i = 0; i < zones_.size(); ++i)
     for (const Wall& w : zones_[i].walls)
-      if (facet_zones_[w.facet].empty() || facet_zones_[w.facet].back() != i)
-        facet_zones_[w.facet].push_back(i);
+      for (const std::uint32_t f : wall(w.facet))
+        if (facet_zones_[f].empty() || facet_zones_[f].back() != i) facet_zones_[f].push_back(i);
+}
+
+const std::vector<std::uint32_t>& AxisZones::wall(std::uint32_t f) const {
+  return walls_of_[wall_key_[f]];
 }
 
 AxisZones::Placed AxisZones::place(const surface::SurfaceMesh& m, std::uint32_t f,
@@ -108,7 +140,7 @@ AxisZones::Placed AxisZones::place(const surface::SurfaceMesh& m, std::uint32_t 
     const Wall* own = nullptr;
     double best = 0;
     for (const Wall& wall : z.walls)
-      if (wall.facet == f && dot(wall.e, w) > best) {
+      if (wall_key_[wall.facet] == wall_key_[f] && dot(wall.e, w) > best) {
         best = dot(wall.e, w);
         own = &wall;
       }

@@ -36,13 +36,20 @@
 // The zone of s is its protecting cylinder (refine/split.hpp: radius kCylinderFraction times
 // the local feature size of s, capped by the element size), between its two ends, and a
 // zone is kept only where every wall holds the whole strip along s (no other segment of
-// the facet leaves an end of s at an acute angle on that side): the argument needs every
-// copy to exist. A triangle facet never does; on a scanned surface folded to dihedrals of
-// one degree (a public test model, cheburashka), zones of triangle walls made copies that
-// skipped most walls and cascaded to the vertex cap (400,000 vertices in 17 s, where plain
-// repairs end at 220,000). Floating
-// point says where the copies go (place_on_facet puts them on the facet's plane); exact
-// predicates decide everything about them.
+// the wall leaves an end of s at an acute angle on that side): the argument needs every
+// copy to exist. A wall is the coplanar group of a facet through s (domain/coplanar.cpp)
+// when the group lies exactly on one plane (else the facet alone: the copies need one
+// plane; a rotated star prism whose top was split into triangles planar only within the
+// tolerance ended with facets uncovered when such a group was a wall): a side given as two
+// triangles holds the strip as the quadrilateral does, the edge between them being no
+// boundary of it, and a copy goes into whichever facet of the group holds it (a thin slot whose walls are triangle pairs, exactly
+// planar: NOT CONFORMING when each triangle was a wall of its own, since the triangle
+// through s never holds the strip; tests/regress/outside-notch-3-degrees-triangle-walls-*).
+// A lone triangle facet never does; on a scanned surface folded to dihedrals of one degree
+// (a public test model, cheburashka), zones of triangle walls made copies that skipped most
+// walls and cascaded to the vertex cap (400,000 vertices in 17 s, where plain repairs end
+// at 220,000). Floating point says where the copies go (place_on_facet puts them on the
+// facet's plane); exact predicates decide everything about them.
 #pragma once
 
 #include <cstdint>
@@ -79,6 +86,10 @@ class AxisZones {
   // instead of ulps from it.
   static constexpr int kGridBits = 30;
   bool empty() const { return zones_.empty(); }
+  // The facets of f's wall, f among them: its coplanar group (domain/coplanar.cpp) when
+  // the group lies exactly on one plane, else f alone. Precondition: f is a face of the
+  // mesh the zones were built for.
+  const std::vector<std::uint32_t>& wall(std::uint32_t f) const;
 
  private:
   struct Wall {
@@ -93,6 +104,8 @@ class AxisZones {
   };
   std::vector<Zone> zones_;
   std::vector<std::vector<std::uint32_t>> facet_zones_;  // per facet: zones it is a wall of
+  std::vector<std::uint32_t> wall_key_;                  // per facet: its wall's first facet
+  std::vector<std::vector<std::uint32_t>> walls_of_;     // per wall's first facet: its facets
 };
 
 }  // namespace pdr::refine

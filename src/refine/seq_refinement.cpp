@@ -696,10 +696,34 @@ class Refiner {
       // Only a ball's shell goes in an active protecting ball, and a split the last
       // attempt made instead can have turned one on.
       if (in_active_ball(c.p)) break;
-      const auto loc = surface::locate_in_facet(m_.surf, c.facet, c.p, from);
+      // The copy lies in its wall: the facet through the axis, or another facet of the
+      // wall (its exactly coplanar group) at an end of the axis.
+      std::optional<surface::FacetLocation> loc;
+      std::uint32_t facet = c.facet;
+      Point p = c.p;
+      for (const std::uint32_t g : zones_.wall(c.facet)) {
+        std::uint32_t start = from;
+        if (g != c.facet) {
+          const surface::SurfaceSegment& axis = m_.surf.segments[c.axis];
+          const auto holds = [&](std::uint32_t v) {
+            for (const std::uint32_t sg : m_.surf.facets[g].segments)
+              if (m_.surf.segments[sg].a == v || m_.surf.segments[sg].b == v) return true;
+            return false;
+          };
+          start = holds(axis.a) ? axis.a : axis.b;
+          if (!holds(start)) continue;
+        }
+        const Point q = c.p;
+        loc = surface::locate_in_facet(m_.surf, g, q, start);
+        if (loc) {
+          facet = g;
+          p = q;
+          break;
+        }
+      }
       if (!loc || loc->on_subsegment) break;
       const surface::FacetCavity fc =
-          surface::build_facet_cavity(m_.surf, c.facet, c.p, {loc->subfacet}, std::nullopt);
+          surface::build_facet_cavity(m_.surf, facet, p, {loc->subfacet}, std::nullopt);
       const TetId hint = m_.dt.last_tet();
       const OnFacet r = insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, size2, kNone);
       if (r == OnFacet::Inserted) {

@@ -179,6 +179,63 @@ TEST(AxisZones, NoZoneAlongTriangleWalls) {
   EXPECT_TRUE(AxisZones(mesh, cylinders, std::numeric_limits<double>::infinity()).empty());
 }
 
+// A 3-degree slot cut into a square prism, each of its two walls given as two exactly
+// coplanar triangles whose diagonals leave the slot's bottom corner. Neither triangle
+// through the slot's edge holds the strip along it, but each wall (the triangles' coplanar
+// group) does: the zone is kept, and a point of the other triangle of a wall near the edge
+// gets its copy in the opposite wall. With each triangle a wall of its own (no zone), the
+// slot's repairs cascaded and the run ended NOT CONFORMING
+// (tests/regress/outside-notch-3-degrees-triangle-walls-axis-zone.poly).
+TEST(AxisZones, ZoneAlongWallsOfCoplanarTriangles) {
+  const double h = 1.5 * std::tan(1.5 * std::numbers::pi / 180);
+  std::vector<Point> pts;
+  for (const double z : {0.0, 1.0})
+    for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+             {-1, -1}, {1, -1}, {1, -h}, {-0.5, 0}, {1, h}, {1, 1}, {-1, 1}})
+      pts.push_back({x, y, z});
+  std::vector<std::vector<std::vector<std::uint32_t>>> facets;
+  for (const std::uint32_t base : {0u, 7u})  // bottom and top: fans from the slot's corner
+    for (const std::uint32_t k : {4u, 5u, 6u, 0u, 1u})
+      facets.push_back({{base + 3, base + k, base + (k + 1) % 7}});
+  for (std::uint32_t i = 0; i < 7; ++i) {
+    const std::uint32_t j = (i + 1) % 7;
+    if (i != 2 && i != 3) facets.push_back({{i, j, j + 7, i + 7}});
+  }
+  facets.push_back({{2, 3, 9}});   // wall at y < 0: the triangle off the slot's edge
+  facets.push_back({{3, 10, 9}});  //   and the one through it
+  facets.push_back({{3, 4, 11}});  // wall at y > 0
+  facets.push_back({{3, 11, 10}});
+  const domain::DomainAnalysis an = domain::analyze(make_plc(pts, facets));
+  const SurfaceMesh mesh = init_surface(an).mesh;
+  const std::vector<double> cylinders = protecting_cylinders(an);
+  const auto edge = an.domain.find_segment(3, 10);
+  ASSERT_TRUE(edge.has_value());
+  ASSERT_GT(cylinders.at(*edge), 0);
+  const AxisZones zones(mesh, cylinders, std::numeric_limits<double>::infinity());
+  ASSERT_FALSE(zones.empty());
+  const auto off_edge = static_cast<std::uint32_t>(facets.size() - 4);
+  ASSERT_EQ(zones.wall(off_edge).size(), 2u);
+  // In the triangle (2, 3, 9): near the corner 3, farther from the edge than along it.
+  const double r = cylinders[*edge] / 2, along = r / 5;
+  const double n = std::hypot(1.5, h);
+  Point p{-0.5 + r * 1.5 / n, -r * h / n, along};
+  p = place_on_facet(mesh.facets[off_edge].chart, p);
+  const AxisZones::Placed placed = zones.place(mesh, off_edge, p);
+  ASSERT_EQ(placed.copies.size(), 1u);
+  const AxisZones::Copy& c = placed.copies.front();
+  const auto [along1, r1] = axial(pts[3], pts[10], c.p);
+  EXPECT_NEAR(along1, along, 1e-6 * r);
+  EXPECT_NEAR(r1, r, 1e-6 * r);
+  EXPECT_GT(c.p[1], 0);  // in the opposite wall
+  // It lies in a facet of that wall: the triangle (3, 4, 11), which does not hold the edge.
+  int holders = 0;
+  for (const std::uint32_t g : zones.wall(c.facet)) {
+    const auto loc = locate_in_facet(mesh, g, c.p, 3);
+    if (loc && !loc->on_subsegment) ++holders;
+  }
+  EXPECT_EQ(holders, 1);
+}
+
 TEST(FacetLocate, FindsTheSubfacetHoldingAPoint) {
   const Star s = star(9, {0, 1, 5}, 0.4, 1.3, 2.2);
   const SurfaceSegment& axis = s.mesh.segments[s.axis];
