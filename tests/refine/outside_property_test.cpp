@@ -16,10 +16,12 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,7 @@
 #include "support/admissible_fixtures.hpp"
 #include "support/outside_fixtures.hpp"
 #include "support/outside_verdict.hpp"
+#include "support/plc_fixtures.hpp"
 #include "support/union_fixtures.hpp"
 
 namespace pdr::refine::test {
@@ -178,6 +181,61 @@ TEST(OutsideProperty, StackedUnionsOfRotatedBoxesEndConforming) {
     const Sizing z = *gen_fine_sizing(plc);
     judge_outside("StackedUnionsOfRotatedBoxesEndConforming", plc, z,
                   "a stacked union of rotated boxes does not end in a conforming Delaunay mesh");
+  }, seed());
+}
+
+// A square prism [-1,1]^2 x [0,1] with a slot of A degrees (1 to 10) cut D deep into one
+// side, exact coordinates, each slot wall given as two triangles (either diagonal) and the
+// bottom and top as polygons or as fans from the slot's corner: what an STL of a slotted
+// part gives. The walls' triangles are exactly coplanar, so each wall is one wall of the
+// slot's edge for the rotation copies (refine/axis_zones.hpp); when each triangle was a
+// wall of its own, 5 of 6 such slots (diagonals from one corner) ended NOT CONFORMING.
+Plc slot_with_triangle_walls(double angle_deg, double depth, bool diag_low, bool diag_high,
+                             bool fans) {
+  const double h = depth * std::tan(angle_deg * std::numbers::pi / 360);
+  const double tip = 1 - depth;
+  std::vector<Point> pts;
+  for (const double z : {0.0, 1.0})
+    for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+             {-1, -1}, {1, -1}, {1, -h}, {tip, 0}, {1, h}, {1, 1}, {-1, 1}})
+      pts.push_back({x, y, z});
+  std::vector<FacetSpec> facets;
+  for (const std::uint32_t base : {0u, 7u}) {
+    if (!fans) {
+      facets.push_back({{base, base + 1, base + 2, base + 3, base + 4, base + 5, base + 6}});
+      continue;
+    }
+    for (const std::uint32_t k : {4u, 5u, 6u, 0u, 1u})
+      facets.push_back({{base + 3, base + k, base + (k + 1) % 7}});
+  }
+  for (std::uint32_t i = 0; i < 7; ++i) {
+    const std::uint32_t j = (i + 1) % 7;
+    const bool wall = i == 2 || i == 3;
+    if (!wall) {
+      facets.push_back({{i, j, j + 7, i + 7}});
+      continue;
+    }
+    if (i == 2 ? diag_low : diag_high) {  // the diagonal from i to j + 7
+      facets.push_back({{i, j, j + 7}});
+      facets.push_back({{i, j + 7, i + 7}});
+    } else {  // from j to i + 7
+      facets.push_back({{i, j, i + 7}});
+      facets.push_back({{j, j + 7, i + 7}});
+    }
+  }
+  return make_plc(pts, facets);
+}
+
+TEST(OutsideProperty, SlotsWithTriangleWallsEndConforming) {
+  check_property("SlotsWithTriangleWallsEndConforming", std::max(1, cases() / 10), [] {
+    const double angle = *rc::gen::inRange(10, 101) / 10.0;
+    const double depth = *rc::gen::inRange(5, 19) / 10.0;
+    const Plc plc = slot_with_triangle_walls(angle, depth, *rc::gen::arbitrary<bool>(),
+                                             *rc::gen::arbitrary<bool>(),
+                                             *rc::gen::arbitrary<bool>());
+    const Sizing z = *gen_fine_sizing(plc);
+    judge_outside("SlotsWithTriangleWallsEndConforming", plc, z,
+                  "a slot with triangle walls does not end in a conforming Delaunay mesh");
   }, seed());
 }
 
