@@ -32,7 +32,7 @@ Point perpendicular(const Point& x, const Point& u) {
 // cosine is floating point with a margin of 1e-9: it chooses where copies go, and
 // classifies a right angle bent by rounding as right; it decides nothing about T.
 bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& wall,
-                 std::uint32_t s, const Point& e, const Point& u) {
+                 std::uint32_t s, const Point& e, const Point& u, double uncertainty) {
   const surface::SurfaceSegment& axis = m.segments[s];
   const auto in_wall = [&](std::uint32_t g) {
     return std::find(wall.begin(), wall.end(), g) != wall.end();
@@ -50,7 +50,10 @@ bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>
         if (n == 0) continue;
         for (double& c : d) c /= n;
         if (dot(d, e) <= 0) continue;  // on the wall's other side of s
-        if (sign * dot(d, u) > 1e-9) return false;
+        const Point axis_d = sub(m.point(axis.b), m.point(axis.a));
+        const double margin =
+            1e-9 + 2 * uncertainty * (1 / n + 1 / std::sqrt(dot(axis_d, axis_d)));
+        if (sign * dot(d, u) > margin) return false;
       }
     }
   return true;
@@ -59,7 +62,7 @@ bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>
 }  // namespace
 
 AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& cylinders,
-                     double cap) {
+                     double cap, double uncertainty) {
   // Walls: coplanar groups whose facets lie exactly on one plane (every corner of each on
   // the plane of the group's first facet); a group coplanar only within the tolerance has
   // no one plane for the copies, and each of its facets stays a wall of its own.
@@ -103,7 +106,7 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
           if (v == chain[0] || v == chain[1]) continue;
           const Point e = perpendicular(sub(m.point(v), z.a), z.u);
           if (dot(e, e) > 0) z.walls.push_back({f, e});
-          strips = strips && holds_strip(m, wall(f), s, e, z.u);
+          strips = strips && holds_strip(m, wall(f), s, e, z.u, uncertainty);
         }
       }
     }

@@ -63,8 +63,10 @@ namespace pdr::refine {
 class AxisZones {
  public:
   AxisZones() = default;
-  // cylinders: per segment of m, the protecting cylinder's radius (0: none), capped by `cap`.
-  AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& cylinders, double cap);
+  // cylinders: per segment of m, the protecting cylinder's radius (0: none), capped by `cap`;
+  // uncertainty: how far an input vertex may lie from where the input means it (0: exact).
+  AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& cylinders, double cap,
+            double uncertainty = 0);
 
   struct Copy {
     std::uint32_t facet = 0;

@@ -368,7 +368,7 @@ class Refiner {
     if (const auto v = smallest_volume(o_)) cap = std::min(cap, std::cbrt(*v));
     guard_ = SplitGuard(
         m_.surf, acute, [b = budget_](double d) { return b.resolution_at(d) / 64; }, o_.cylinders, cap);
-    zones_ = AxisZones(m_.surf, o_.cylinders, cap);
+    zones_ = AxisZones(m_.surf, o_.cylinders, cap, o_.vertex_uncertainty);
     {
       const std::vector<double> near = nearest_at_start();
       balls_ = VertexZones(m_.surf, acute, [&](std::uint32_t v) {
@@ -1063,6 +1063,14 @@ void set_domain(RefineOptions& o, const domain::DomainAnalysis& an) {
   o.exact_theory = theorem_applies(an);
   o.acute_vertices = acute_vertices(an.report);
   o.cylinders = protecting_cylinders(an);
+  {
+    const domain::DomainReport& r = an.report;
+    double diag2 = 0;
+    for (int k = 0; k < 3; ++k) diag2 += (r.bbox_hi[k] - r.bbox_lo[k]) * (r.bbox_hi[k] - r.bbox_lo[k]);
+    o.vertex_uncertainty = r.tolerance_facets.empty() && r.right_within_tolerance == 0
+                               ? 0.0
+                               : an.domain.tolerance.admitted(std::sqrt(diag2));
+  }
   o.region_volumes = domain::RegionVolumes::of(an.domain);
 }
 

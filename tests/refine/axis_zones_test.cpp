@@ -17,6 +17,7 @@
 #include "domain/analysis.hpp"
 #include "geom/predicates.hpp"
 #include "refine/axis_zones.hpp"
+#include "refine/seq_refinement.hpp"
 #include "refine/split.hpp"
 #include "support/outside_fixtures.hpp"
 #include "support/plc_fixtures.hpp"
@@ -234,6 +235,37 @@ TEST(AxisZones, ZoneAlongWallsOfCoplanarTriangles) {
     if (loc && !loc->on_subsegment) ++holders;
   }
   EXPECT_EQ(holders, 1);
+}
+
+// A walled star prism turned and printed with 7 digits (as an STL or OFF writer gives it):
+// the walls' corners at the axis's ends are right angles bent by the rounding, about 1e-7,
+// far beyond the 1e-9 margin that reads a right angle bent by a double's rounding as right.
+// Read so, no wall held the strip, the axis had no zone, and repairs cascaded toward the
+// notch of such a part (tests/regress/outside-notch-3-degrees-printed-7-digits-runaway.poly
+// ended NOT CONFORMING). With the uncertainty the domain analysis admits for these
+// coordinates (RefineOptions::vertex_uncertainty) the zone is kept.
+TEST(AxisZones, ZoneAlongWallsBentByTheDigitsRounding) {
+  std::vector<P2d> profile;
+  for (int i = 0; i < 8; ++i) {
+    const double t = 2 * std::numbers::pi * i / 8 + (i % 2 ? 0.05 : 0);
+    const double r = i % 2 ? 0.6 : 1.0;
+    profile.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  const Plc plc = printed(rotated(walled_prism(profile, {0, 1, 4}, 0, 0.5), 0.3, 0.7, 1.1), 7);
+  const domain::DomainAnalysis an = domain::analyze(plc);
+  const SurfaceMesh mesh = init_surface(an).mesh;
+  RefineOptions o;
+  set_domain(o, an);
+  ASSERT_GT(o.vertex_uncertainty, 0);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(AxisZones(mesh, o.cylinders, inf, o.vertex_uncertainty).empty());
+  EXPECT_TRUE(AxisZones(mesh, o.cylinders, inf, 0).empty());
+  // Printed with all 17 digits, the same prism keeps its zone (the relative tolerance).
+  const domain::DomainAnalysis exact =
+      domain::analyze(rotated(walled_prism(profile, {0, 1, 4}, 0, 0.5), 0.3, 0.7, 1.1));
+  RefineOptions e;
+  set_domain(e, exact);
+  EXPECT_FALSE(AxisZones(init_surface(exact).mesh, e.cylinders, inf, e.vertex_uncertainty).empty());
 }
 
 TEST(FacetLocate, FindsTheSubfacetHoldingAPoint) {

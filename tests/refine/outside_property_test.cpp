@@ -256,8 +256,7 @@ TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
 
 // Replays of tests/regress/outside-*.poly and outside-*.off, one test each; a known open bug
 // is registered DISABLED_ with the bug named in its file.
-const std::vector<std::string> kKnownBugs = {"outside-notch-3-degrees-printed-7-digits-runaway.poly",
-                                             "outside-union-notch-5-degrees-printed-9-digits-cascade.poly"};
+const std::vector<std::string> kKnownBugs = {};
 // Replays of more than about ten seconds (tests/refine/CMakeLists.txt runs them, labelled
 // slow): a crumpled top whose folds make 560K tets of surface refinement (19 s).
 const std::vector<std::string> kSlow = {"outside-crumpled-top-split-not-star.off"};
@@ -296,8 +295,8 @@ TEST(OutsideProperty, FlatTetsOnTiltedFacetsAreCountedRepairs) {
   EXPECT_FALSE(j.contains("conformity")) << j.dump(1);
 }
 
-// A 3-degree notch printed with 7 digits (a known bug, replayed disabled above: it ends NOT
-// CONFORMING). Its flat-tet repairs went on around a few vertices of one wall at circumradii
+// A 3-degree notch printed with 7 digits (replayed above: it conforms since the zone of
+// its edge is kept, refine/axis_zones.hpp). Before, its flat-tet repairs went on around a few vertices of one wall at circumradii
 // of 1e-9 to 4e-12 (72,000 of them by 80,000 vertices), each flag repair recomputed every
 // flag, and the run never ended. Flat-tet repairs stop at the facet's planarity gap, so it
 // ends by itself far below the cap: the phase is bounded even where the mesh is wrong.
