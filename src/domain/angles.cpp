@@ -48,7 +48,7 @@ double ray_cone_deg(const Vec& s, const Vec& r1, const Vec& r2) {
 // No angle more than this (radians, 0.057 degrees) from a right angle is read as one,
 // whatever the uncertainty and however short the edges (a tolerance classifies rounding,
 // not shapes).
-constexpr double kMaxOpening = 1e-3;
+constexpr double kMaxOpening = kMaxRightOpening;
 
 // Whether the angle at o between a and b is acute as the input means it: the exact sign
 // of the cosine is positive, and moving o, a and b by at most `delta` each (the positional
@@ -340,5 +340,9 @@ class Checker {
 }  // namespace
 
 Admissibility check_admissibility(const PlcDomain& dom) { return Checker(dom).run(); }
+
+double positional_uncertainty(const PlcDomain& dom) {
+  return uncertainty(dom.plc.points, dom.tolerance);
+}
 
 }  // namespace pdr::domain

@@ -91,4 +91,10 @@ struct Admissibility {
 
 Admissibility check_admissibility(const PlcDomain& dom);
 
+// The angle classification's bounds, for others that read right angles bent by rounding
+// (refine/axis_zones.hpp): how far a vertex of dom is known to lie from where the input
+// means it (delta above), and the most any angle is opened by it (radians).
+double positional_uncertainty(const PlcDomain& dom);
+inline constexpr double kMaxRightOpening = 1e-3;
+
 }  // namespace pdr::domain

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "domain/angles.hpp"
 #include "geom/filter_kit.hpp"
 #include "geom/predicates.hpp"
 
@@ -29,8 +30,10 @@ Point perpendicular(const Point& x, const Point& u) {
 // other segment of the wall (f's coplanar group, less the edges between its own facets) at
 // an end of s, on that side, leaves the end at 90 degrees or more from s (an acute one cuts
 // the strip off near that end, as the third side of a lone triangle facet does). The
-// cosine is floating point with a margin of 1e-9: it chooses where copies go, and
-// classifies a right angle bent by rounding as right; it decides nothing about T.
+// cosine is floating point with a margin of 1e-9, plus, for input planar only within the
+// tolerance, the opening the domain analysis reads as a right angle bent by the input's
+// rounding (domain/angles.hpp: moving the three vertices by `uncertainty`, to first
+// order, at most 1e-3 radians): it chooses where copies go, and decides nothing about T.
 bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& wall,
                  std::uint32_t s, const Point& e, const Point& u, double uncertainty) {
   const surface::SurfaceSegment& axis = m.segments[s];
@@ -51,9 +54,10 @@ bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>
         for (double& c : d) c /= n;
         if (dot(d, e) <= 0) continue;  // on the wall's other side of s
         const Point axis_d = sub(m.point(axis.b), m.point(axis.a));
-        const double margin =
-            1e-9 + 2 * uncertainty * (1 / n + 1 / std::sqrt(dot(axis_d, axis_d)));
-        if (sign * dot(d, u) > margin) return false;
+        const double gs = 1 / std::sqrt(dot(axis_d, axis_d)), go = 1 / n;
+        const double opening = std::min(domain::kMaxRightOpening,
+                                        uncertainty * (go + gs + std::hypot(go, gs)));
+        if (sign * dot(d, u) > 1e-9 + std::sin(opening)) return false;
       }
     }
   return true;

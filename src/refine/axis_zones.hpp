@@ -15,7 +15,10 @@
 // so R(x) is strictly farther from y than x whenever r > 0, r_y > 0 and theta != 0. Take y
 // the centre of a subfacet g of G (its equatorial ball is centred on G's plane) and x a
 // vertex of G: x is not inside g's circle (G's triangulation is Delaunay in its plane), so
-// R(x) is not inside g's equatorial ball. Hence, if every vertex inserted on a wall within
+// R(x) is not inside g's equatorial ball. (A wall of several facets is triangulated facet
+// by facet, so a vertex x of another facet of G's wall can lie in g's circle; but then x
+// is already in g's equatorial ball, and g is out of T, or encroached, with or without
+// copies: the copies add nothing there.) Hence, if every vertex inserted on a wall within
 // the zone of s is inserted together with its copies R(x) on every other wall of s (same
 // distance along s, same distance from it), no vertex of such a set encroaches a subfacet
 // of another wall whose centre lies on that wall's side of s; a centre on s or beyond it

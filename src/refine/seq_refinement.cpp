@@ -23,6 +23,7 @@
 #include "geom/point_text.hpp"
 #include "mesh/tables.hpp"
 #include "refine/audit.hpp"
+#include "domain/angles.hpp"
 #include "refine/axis_zones.hpp"
 #include "refine/budget.hpp"
 #include "refine/closure.hpp"
@@ -696,12 +697,14 @@ class Refiner {
       // Only a ball's shell goes in an active protecting ball, and a split the last
       // attempt made instead can have turned one on.
       if (in_active_ball(c.p)) break;
-      // The copy lies in its wall: the facet through the axis, or another facet of the
-      // wall (its exactly coplanar group) at an end of the axis.
+      // The copy lies in its wall: the facet through the axis (tried first), or another
+      // facet of the wall (its exactly coplanar group) at an end of the axis.
       std::optional<surface::FacetLocation> loc;
       std::uint32_t facet = c.facet;
-      Point p = c.p;
-      for (const std::uint32_t g : zones_.wall(c.facet)) {
+      std::vector<std::uint32_t> order{c.facet};
+      for (const std::uint32_t g : zones_.wall(c.facet))
+        if (g != c.facet) order.push_back(g);
+      for (const std::uint32_t g : order) {
         std::uint32_t start = from;
         if (g != c.facet) {
           const surface::SurfaceSegment& axis = m_.surf.segments[c.axis];
@@ -713,17 +716,15 @@ class Refiner {
           start = holds(axis.a) ? axis.a : axis.b;
           if (!holds(start)) continue;
         }
-        const Point q = c.p;
-        loc = surface::locate_in_facet(m_.surf, g, q, start);
+        loc = surface::locate_in_facet(m_.surf, g, c.p, start);
         if (loc) {
           facet = g;
-          p = q;
           break;
         }
       }
       if (!loc || loc->on_subsegment) break;
       const surface::FacetCavity fc =
-          surface::build_facet_cavity(m_.surf, facet, p, {loc->subfacet}, std::nullopt);
+          surface::build_facet_cavity(m_.surf, facet, c.p, {loc->subfacet}, std::nullopt);
       const TetId hint = m_.dt.last_tet();
       const OnFacet r = insert_on_facet(fc, hint, kNoTet, /*below_floor=*/true, size2, kNone);
       if (r == OnFacet::Inserted) {
@@ -1063,14 +1064,10 @@ void set_domain(RefineOptions& o, const domain::DomainAnalysis& an) {
   o.exact_theory = theorem_applies(an);
   o.acute_vertices = acute_vertices(an.report);
   o.cylinders = protecting_cylinders(an);
-  {
-    const domain::DomainReport& r = an.report;
-    double diag2 = 0;
-    for (int k = 0; k < 3; ++k) diag2 += (r.bbox_hi[k] - r.bbox_lo[k]) * (r.bbox_hi[k] - r.bbox_lo[k]);
-    o.vertex_uncertainty = r.tolerance_facets.empty() && r.right_within_tolerance == 0
-                               ? 0.0
-                               : an.domain.tolerance.admitted(std::sqrt(diag2));
-  }
+  // Exactly planar input keeps the strip test's 1e-9 (refine/axis_zones.hpp).
+  o.vertex_uncertainty = an.report.tolerance_facets.empty() && an.report.right_within_tolerance == 0
+                             ? 0.0
+                             : domain::positional_uncertainty(an.domain);
   o.region_volumes = domain::RegionVolumes::of(an.domain);
 }
 

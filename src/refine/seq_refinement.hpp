@@ -95,9 +95,9 @@ struct RefineOptions {
                                               // vertex
   std::vector<double> cylinders;  // inadmissible: protecting_cylinders(analysis)
                                   // (refine/split.hpp); empty: none
-  // How far an input vertex may lie from where the input means it (the planarity
-  // tolerance's admitted distance over the domain's diameter; 0 for exactly planar input):
-  // classifies the right angles that bound a sharp axis's strip (refine/axis_zones.hpp).
+  // How far an input vertex may lie from where the input means it (the domain analysis'
+  // delta, domain/angles.hpp; 0 for exactly planar input): classifies the right angles
+  // that bound a sharp axis's strip (refine/axis_zones.hpp) as the analysis does.
   double vertex_uncertainty = 0;
   // Given: the only tets that may need a step at the start, every other inside tet being
   // known to meet the bounds (the parallel run's completion: the steps its parallel phase
