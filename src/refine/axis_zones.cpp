@@ -67,9 +67,9 @@ bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>
 
 AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& cylinders,
                      double cap, double uncertainty) {
-  // Walls: coplanar groups whose facets lie exactly on one plane (every corner of each on
-  // the plane of the group's first facet); a group coplanar only within the tolerance has
-  // no one plane for the copies, and each of its facets stays a wall of its own.
+  // Walls: coplanar groups. Whether each lies exactly on one plane (every corner of each
+  // facet on the plane of the group's first facet): only then do copies go into its
+  // facets beside the one through the axis.
   std::vector<std::uint8_t> exact(m.facets.size(), 1);
   for (std::uint32_t f = 0; f < m.facets.size(); ++f) {
     if (!m.facets[f].is_face) continue;
@@ -79,12 +79,13 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
         if (orient3d(ch.origin, ch.t1, ch.t2, m.point(v)) != Sign::Zero)
           exact[m.facets[f].plane_group] = 0;
   }
-  wall_key_.assign(m.facets.size(), 0);
+  exact_ = std::move(exact);
   walls_of_.assign(m.facets.size(), {});
+  group_.assign(m.facets.size(), 0);
   for (std::uint32_t f = 0; f < m.facets.size(); ++f) {
     if (!m.facets[f].is_face) continue;
-    wall_key_[f] = exact[m.facets[f].plane_group] ? m.facets[f].plane_group : f;
-    walls_of_[wall_key_[f]].push_back(f);
+    group_[f] = m.facets[f].plane_group;
+    walls_of_[group_[f]].push_back(f);
   }
   for (std::uint32_t s = 0; s < cylinders.size() && s < m.segments.size(); ++s) {
     if (!(cylinders[s] > 0)) continue;
@@ -126,8 +127,10 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
 }
 
 const std::vector<std::uint32_t>& AxisZones::wall(std::uint32_t f) const {
-  return walls_of_[wall_key_[f]];
+  return walls_of_[group_[f]];
 }
+
+bool AxisZones::exact_wall(std::uint32_t f) const { return exact_[group_[f]] != 0; }
 
 AxisZones::Placed AxisZones::place(const surface::SurfaceMesh& m, std::uint32_t f,
                                    const Point& p) const {
@@ -147,7 +150,7 @@ AxisZones::Placed AxisZones::place(const surface::SurfaceMesh& m, std::uint32_t 
     const Wall* own = nullptr;
     double best = 0;
     for (const Wall& wall : z.walls)
-      if (wall_key_[wall.facet] == wall_key_[f] && dot(wall.e, w) > best) {
+      if (group_[wall.facet] == group_[f] && dot(wall.e, w) > best) {
         best = dot(wall.e, w);
         own = &wall;
       }
@@ -159,11 +162,14 @@ AxisZones::Placed AxisZones::place(const surface::SurfaceMesh& m, std::uint32_t 
     for (const Wall& wall : z.walls) {
       Point q;
       for (int k = 0; k < 3; ++k) q[k] = z.a[k] + along * z.u[k] + r * wall.e[k];
-      q = surface::place_on_facet(m.facets[wall.facet].chart, q);
+      // p's own place is on its own facet's plane (another facet of its wall than the
+      // one through the axis, when p lies there); a copy's, on the plane of the facet
+      // through the axis.
       if (&wall == own)
-        out.own = q;
+        out.own = surface::place_on_facet(m.facets[f].chart, q);
       else
-        out.copies.push_back({wall.facet, q, z.segment});
+        out.copies.push_back(
+            {wall.facet, surface::place_on_facet(m.facets[wall.facet].chart, q), z.segment});
     }
     return out;
   }

@@ -40,12 +40,14 @@
 // the local feature size of s, capped by the element size), between its two ends, and a
 // zone is kept only where every wall holds the whole strip along s (no other segment of
 // the wall leaves an end of s at an acute angle on that side): the argument needs every
-// copy to exist. A wall is the coplanar group of a facet through s (domain/coplanar.cpp)
-// when the group lies exactly on one plane (else the facet alone: the copies need one
-// plane; a rotated star prism whose top was split into triangles planar only within the
-// tolerance ended with facets uncovered when such a group was a wall): a side given as two
-// triangles holds the strip as the quadrilateral does, the edge between them being no
-// boundary of it, and a copy goes into whichever facet of the group holds it (a thin slot whose walls are triangle pairs, exactly
+// copy to exist. A wall is the coplanar group of a facet through s (domain/coplanar.cpp):
+// a side given as two triangles holds the strip as the quadrilateral does, the edge
+// between them being no boundary of it. A point of the wall keeps its own facet's plane;
+// its copies go on the plane of the facet through s, and, when the group lies exactly on
+// one plane, into whichever facet of the group holds them (a group coplanar only within
+// the tolerance drops the copies outside the facet through s: placed on the other facets'
+// planes, a few 1e-10 radians apart, they left flat tets along the crease of a rotated
+// star prism printed with 9 digits) (a thin slot whose walls are triangle pairs, exactly
 // planar: NOT CONFORMING when each triangle was a wall of its own, since the triangle
 // through s never holds the strip; tests/regress/outside-notch-3-degrees-triangle-walls-*).
 // A lone triangle facet never does; on a scanned surface folded to dihedrals of one degree
@@ -91,10 +93,12 @@ class AxisZones {
   // instead of ulps from it.
   static constexpr int kGridBits = 30;
   bool empty() const { return zones_.empty(); }
-  // The facets of f's wall, f among them: its coplanar group (domain/coplanar.cpp) when
-  // the group lies exactly on one plane, else f alone. Precondition: f is a face of the
-  // mesh the zones were built for.
+  // The facets of f's wall, f among them: its coplanar group (domain/coplanar.cpp).
+  // Precondition: f is a face of the mesh the zones were built for.
   const std::vector<std::uint32_t>& wall(std::uint32_t f) const;
+  // Whether f's wall lies exactly on one plane: copies then go into any of its facets;
+  // else only into the facet through the axis (refine/seq_refinement.cpp insert_copy).
+  bool exact_wall(std::uint32_t f) const;
 
  private:
   struct Wall {
@@ -109,8 +113,9 @@ class AxisZones {
   };
   std::vector<Zone> zones_;
   std::vector<std::vector<std::uint32_t>> facet_zones_;  // per facet: zones it is a wall of
-  std::vector<std::uint32_t> wall_key_;                  // per facet: its wall's first facet
+  std::vector<std::uint32_t> group_;                     // per facet: its wall's first facet
   std::vector<std::vector<std::uint32_t>> walls_of_;     // per wall's first facet: its facets
+  std::vector<std::uint8_t> exact_;                      // per wall's first facet: one plane
 };
 
 }  // namespace pdr::refine

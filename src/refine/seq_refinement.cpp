@@ -697,13 +697,14 @@ class Refiner {
       // Only a ball's shell goes in an active protecting ball, and a split the last
       // attempt made instead can have turned one on.
       if (in_active_ball(c.p)) break;
-      // The copy lies in its wall: the facet through the axis (tried first), or another
-      // facet of the wall (its exactly coplanar group) at an end of the axis.
+      // The copy lies in its wall: the facet through the axis (tried first), or, when the
+      // wall lies exactly on one plane, another of its facets at an end of the axis.
       std::optional<surface::FacetLocation> loc;
       std::uint32_t facet = c.facet;
       std::vector<std::uint32_t> order{c.facet};
-      for (const std::uint32_t g : zones_.wall(c.facet))
-        if (g != c.facet) order.push_back(g);
+      if (zones_.exact_wall(c.facet))
+        for (const std::uint32_t g : zones_.wall(c.facet))
+          if (g != c.facet) order.push_back(g);
       for (const std::uint32_t g : order) {
         std::uint32_t start = from;
         if (g != c.facet) {

@@ -188,10 +188,11 @@ TEST(OutsideProperty, StackedUnionsOfRotatedBoxesEndConforming) {
 // A square prism [-1,1]^2 x [0,1] with a slot of A degrees (1 to 10) cut D deep into one
 // side, exact coordinates, each slot wall given as two triangles (either diagonal) and the
 // bottom and top as polygons or as fans from the slot's corner: what an STL of a slotted
-// part gives, turned by a signed permutation of the axes. The walls' triangles are exactly
-// coplanar, so each wall is one wall of the slot's edge for the rotation copies
-// (refine/axis_zones.hpp); when each triangle was a wall of its own, 5 of 6 such slots
-// (diagonals from one corner) ended NOT CONFORMING.
+// part gives, turned by a signed permutation of the axes (exact). A wall's triangles are
+// one wall of the slot's edge for the rotation copies (refine/axis_zones.hpp); when each
+// triangle was a wall of its own, 5 of 6 such slots with both diagonals from one corner
+// ended NOT CONFORMING. Turned by any rotation and printed with 17, 9 or 7 digits, 100
+// cases found two still open (docs/outside-the-theory.md): not generated here.
 Plc slot_with_triangle_walls(double angle_deg, double depth, bool diag_low, bool diag_high,
                              bool fans) {
   const double h = depth * std::tan(angle_deg * std::numbers::pi / 360);
@@ -235,8 +236,7 @@ TEST(OutsideProperty, SlotsWithTriangleWallsEndConforming) {
     Plc plc = slot_with_triangle_walls(angle, depth, *rc::gen::arbitrary<bool>(),
                                        *rc::gen::arbitrary<bool>(),
                                        *rc::gen::arbitrary<bool>());
-    // Turned by a signed permutation of the axes: exact, so the walls stay exactly coplanar
-    // (a rotated slot's triangles are coplanar only within the tolerance: still open).
+    // Turned by a signed permutation of the axes: exact, so the walls stay exactly coplanar.
     const auto perm = *rc::gen::elementOf(std::vector<std::array<int, 3>>{
         {0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}});
     const auto signs = *rc::gen::inRange(0, 8);
@@ -267,7 +267,9 @@ TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
 
 // Replays of tests/regress/outside-*.poly and outside-*.off, one test each; a known open bug
 // is registered DISABLED_ with the bug named in its file.
-const std::vector<std::string> kKnownBugs = {};
+const std::vector<std::string> kKnownBugs = {
+    "outside-slot-1-degree-triangle-walls-rotated-cascade.poly",
+    "outside-slot-triangle-walls-rotated-7-digits-runaway.poly"};
 // Replays of more than about ten seconds (tests/refine/CMakeLists.txt runs them, labelled
 // slow): a crumpled top whose folds make 560K tets of surface refinement (19 s).
 const std::vector<std::string> kSlow = {"outside-crumpled-top-split-not-star.off"};
