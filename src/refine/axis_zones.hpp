@@ -42,15 +42,15 @@
 // the wall leaves an end of s at an acute angle on that side): the argument needs every
 // copy to exist. A wall is the coplanar group of a facet through s (domain/coplanar.cpp):
 // a side given as two triangles holds the strip as the quadrilateral does, the edge
-// between them being no boundary of it. A point of the wall keeps its own facet's plane;
-// its copies go on the plane of the facet through s, and, when the group lies exactly on
-// one plane, into whichever facet of the group holds them (a group coplanar only within
-// the tolerance drops the copies outside the facet through s: placed on the other facets'
-// planes, a few 1e-10 radians apart, they left flat tets along the crease of a rotated
-// star prism printed with 9 digits) (a thin slot whose walls are triangle pairs, exactly
-// planar: NOT CONFORMING when each triangle was a wall of its own, since the triangle
-// through s never holds the strip; tests/regress/outside-notch-3-degrees-triangle-walls-*).
-// A lone triangle facet never does; on a scanned surface folded to dihedrals of one degree
+// between them being no boundary of it (a thin slot whose walls are triangle pairs ended
+// NOT CONFORMING when each triangle was a wall of its own, since the triangle through s
+// never holds the strip; tests/regress/outside-notch-3-degrees-triangle-walls-*). A point
+// of the wall keeps its own facet's plane; its copies go on the plane of the facet through
+// s, and, when the group lies exactly on one plane, into whichever facet of the group
+// holds them. A group coplanar only within the tolerance drops the copies outside the
+// facet through s: placed on the other facets' planes, a few 1e-10 radians apart, they
+// left flat tets along the crease of a rotated star prism printed with 9 digits.
+// A lone triangle facet never holds the strip; on a scanned surface folded to dihedrals of one degree
 // (a public test model, cheburashka), zones of triangle walls made copies that skipped most
 // walls and cascaded to the vertex cap (400,000 vertices in 17 s, where plain repairs end
 // at 220,000). Floating point says where the copies go (place_on_facet puts them on the
