@@ -48,7 +48,7 @@ double ray_cone_deg(const Vec& s, const Vec& r1, const Vec& r2) {
 // No angle more than this (radians, 0.057 degrees) from a right angle is read as one,
 // whatever the uncertainty and however short the edges (a tolerance classifies rounding,
 // not shapes).
-constexpr double kMaxOpening = kMaxRightOpening;
+constexpr double kMaxOpening = 1e-3;
 
 // Whether the angle at o between a and b is acute as the input means it: the exact sign
 // of the cosine is positive, and moving o, a and b by at most `delta` each (the positional
@@ -65,9 +65,7 @@ bool acute(const Point& o, const Point& a, const Point& b, double delta, std::si
   const Vec x = sub(a, o), y = sub(b, o);
   const double lx = norm(x), ly = norm(y);
   const double cosine = std::min(1.0, dot(x, y) / (lx * ly));
-  const double opening =
-      std::min(kMaxOpening, delta * (1 / lx + 1 / ly + std::hypot(1 / lx, 1 / ly)));
-  if (std::asin(cosine) > opening) return true;
+  if (std::asin(cosine) > right_angle_opening(lx, ly, delta)) return true;
   ++tolerated;
   return false;
 }
@@ -340,6 +338,10 @@ class Checker {
 }  // namespace
 
 Admissibility check_admissibility(const PlcDomain& dom) { return Checker(dom).run(); }
+
+double right_angle_opening(double lx, double ly, double delta) {
+  return std::min(kMaxOpening, delta * (1 / lx + 1 / ly + std::hypot(1 / lx, 1 / ly)));
+}
 
 double positional_uncertainty(const PlcDomain& dom) {
   return uncertainty(dom.plc.points, dom.tolerance);

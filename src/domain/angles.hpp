@@ -91,10 +91,12 @@ struct Admissibility {
 
 Admissibility check_admissibility(const PlcDomain& dom);
 
-// The angle classification's bounds, for others that read right angles bent by rounding
+// The angle classification's rule, for others that read right angles bent by rounding
 // (refine/axis_zones.hpp): how far a vertex of dom is known to lie from where the input
-// means it (delta above), and the most any angle is opened by it (radians).
+// means it (delta above), and how far moving the vertex and the ends of two edges of
+// lengths lx and ly by delta opens the angle between them, to first order and at most
+// 1e-3 radians: an angle that close to 90 degrees is the right angle the input means.
 double positional_uncertainty(const PlcDomain& dom);
-inline constexpr double kMaxRightOpening = 1e-3;
+double right_angle_opening(double lx, double ly, double delta);
 
 }  // namespace pdr::domain

@@ -37,6 +37,8 @@ Point perpendicular(const Point& x, const Point& u) {
 bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>& wall,
                  std::uint32_t s, const Point& e, const Point& u, double uncertainty) {
   const surface::SurfaceSegment& axis = m.segments[s];
+  const Point axis_d = sub(m.point(axis.b), m.point(axis.a));
+  const double axis_length = std::sqrt(dot(axis_d, axis_d));
   const auto in_wall = [&](std::uint32_t g) {
     return std::find(wall.begin(), wall.end(), g) != wall.end();
   };
@@ -53,10 +55,7 @@ bool holds_strip(const surface::SurfaceMesh& m, const std::vector<std::uint32_t>
         if (n == 0) continue;
         for (double& c : d) c /= n;
         if (dot(d, e) <= 0) continue;  // on the wall's other side of s
-        const Point axis_d = sub(m.point(axis.b), m.point(axis.a));
-        const double gs = 1 / std::sqrt(dot(axis_d, axis_d)), go = 1 / n;
-        const double opening = std::min(domain::kMaxRightOpening,
-                                        uncertainty * (go + gs + std::hypot(go, gs)));
+        const double opening = domain::right_angle_opening(n, axis_length, uncertainty);
         if (sign * dot(d, u) > 1e-9 + std::sin(opening)) return false;
       }
     }
@@ -70,16 +69,15 @@ AxisZones::AxisZones(const surface::SurfaceMesh& m, const std::vector<double>& c
   // Walls: coplanar groups. Whether each lies exactly on one plane (every corner of each
   // facet on the plane of the group's first facet): only then do copies go into its
   // facets beside the one through the axis.
-  std::vector<std::uint8_t> exact(m.facets.size(), 1);
+  exact_.assign(m.facets.size(), 1);
   for (std::uint32_t f = 0; f < m.facets.size(); ++f) {
     if (!m.facets[f].is_face) continue;
     const surface::FacetChart& ch = m.facets[m.facets[f].plane_group].chart;
     for (const std::uint32_t s : m.facets[f].segments)
       for (const std::uint32_t v : {m.segments[s].a, m.segments[s].b})
         if (orient3d(ch.origin, ch.t1, ch.t2, m.point(v)) != Sign::Zero)
-          exact[m.facets[f].plane_group] = 0;
+          exact_[m.facets[f].plane_group] = 0;
   }
-  exact_ = std::move(exact);
   walls_of_.assign(m.facets.size(), {});
   group_.assign(m.facets.size(), 0);
   for (std::uint32_t f = 0; f < m.facets.size(); ++f) {

@@ -17,13 +17,13 @@
 #include <sstream>
 
 #include "delaunay/conflict.hpp"
+#include "domain/angles.hpp"
 #include "domain/distance.hpp"
 #include "geom/construct.hpp"
 #include "geom/predicates.hpp"
 #include "geom/point_text.hpp"
 #include "mesh/tables.hpp"
 #include "refine/audit.hpp"
-#include "domain/angles.hpp"
 #include "refine/axis_zones.hpp"
 #include "refine/budget.hpp"
 #include "refine/closure.hpp"
@@ -693,18 +693,18 @@ class Refiner {
         best = d2;
         from = v;
       }
+    // The copy lies in its wall: the facet through the axis (tried first), or, when the
+    // wall lies exactly on one plane, another of its facets at an end of the axis.
+    std::vector<std::uint32_t> order{c.facet};
+    if (zones_.exact_wall(c.facet))
+      for (const std::uint32_t g : zones_.wall(c.facet))
+        if (g != c.facet) order.push_back(g);
     for (int attempt = 0; attempt < 4 && !at_cap(); ++attempt) {
       // Only a ball's shell goes in an active protecting ball, and a split the last
       // attempt made instead can have turned one on.
       if (in_active_ball(c.p)) break;
-      // The copy lies in its wall: the facet through the axis (tried first), or, when the
-      // wall lies exactly on one plane, another of its facets at an end of the axis.
       std::optional<surface::FacetLocation> loc;
       std::uint32_t facet = c.facet;
-      std::vector<std::uint32_t> order{c.facet};
-      if (zones_.exact_wall(c.facet))
-        for (const std::uint32_t g : zones_.wall(c.facet))
-          if (g != c.facet) order.push_back(g);
       for (const std::uint32_t g : order) {
         std::uint32_t start = from;
         if (g != c.facet) {
