@@ -31,4 +31,26 @@ BallEnclosure equatorial_ball(const Point& a, const Point& b, const Point& c);
 // A box containing the closed ball.
 Box enclosing_box(const BallEnclosure& ball);
 
+// Whether p lies provably strictly outside the closed ball: a lower bound of p's squared
+// distance to every centre in the enclosure exceeds the squared radius's upper bound. Per
+// axis the gap from p to the centre's interval is rounded down (interval_detail::down is
+// at most the exact value: interval.hpp), so are its square and the sum; a "false" says
+// nothing. A cheap filter before an exact sign: a candidate of a box query that lies in the
+// box's corners (a flat tet's huge circumball meets much of the mesh's box) costs a few
+// flops instead of a predicate.
+inline bool surely_outside(const BallEnclosure& ball, const Point& p) {
+  using interval_detail::down;
+  double d2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Interval& c = ball.center[i];
+    double g = 0;
+    if (p[i] < c.lo)
+      g = down(c.lo - p[i]);
+    else if (p[i] > c.hi)
+      g = down(p[i] - c.hi);
+    if (g > 0) d2 = down(d2 + down(g * g));
+  }
+  return d2 > ball.r2.hi;
+}
+
 }  // namespace pdr::check

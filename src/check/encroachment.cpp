@@ -8,7 +8,8 @@
 //                of abc in its plane): |p - o|^2 < r^2 exactly (signs::equatorial);
 //                on the sphere is counted, not a violation
 // Candidates come from the vertex grid over a box that provably contains the closed ball
-// (circumball.hpp). The paper calls an element encroached when its *closed* ball holds a
+// (circumball.hpp); those provably outside the ball's enclosure (surely_outside) get no
+// exact sign. The paper calls an element encroached when its *closed* ball holds a
 // vertex; we fail only the strict case and report the boundary case separately, since a
 // Delaunay refinement can legitimately leave cospherical vertices (structured input).
 #include <algorithm>
@@ -41,11 +42,12 @@ CheckResult check_subsegments_unencroached(const Context& c) {
       if (!s.dropped.empty() && s.dropped[k]) continue;
       const std::uint32_t a = s.vertices[k], b = s.vertices[k + 1];
       ++r.checked;
-      const Box box = enclosing_box(diametral_ball(pts[a], pts[b]));
+      const BallEnclosure ball = diametral_ball(pts[a], pts[b]);
+      const Box box = enclosing_box(ball);
       std::int64_t first = -1;
       std::uint64_t inside = 0;
       c.grid.query(box, [&](std::uint32_t v, const Point& p) {
-        if (v == a || v == b || !in_box(box, p)) return;
+        if (v == a || v == b || !in_box(box, p) || surely_outside(ball, p)) return;
         const Sign d = signs::dot(p, pts[a], p, pts[b]);
         if (d == Sign::Zero) ++on_sphere;
         if (d != Sign::Negative) return;
@@ -88,11 +90,12 @@ CheckResult check_subfacets_unencroached(const Context& c) {
         continue;
       }
       ++col.checked;
-      const Box box = enclosing_box(equatorial_ball(pa, pb, pc));
+      const BallEnclosure ball = equatorial_ball(pa, pb, pc);
+      const Box box = enclosing_box(ball);
       std::int64_t first = -1;
       std::uint64_t inside = 0;
       c.grid.query(box, [&](std::uint32_t v, const Point& p) {
-        if (v == t[0] || v == t[1] || v == t[2] || !in_box(box, p)) return;
+        if (v == t[0] || v == t[1] || v == t[2] || !in_box(box, p) || surely_outside(ball, p)) return;
         const Sign s = signs::equatorial(pa, pb, pc, p);
         if (s == Sign::Zero) ++on_sphere;
         if (s != Sign::Positive) return;

@@ -71,6 +71,20 @@ Box GridFrame::region(const std::array<int, 3>& c) const {
   return b;
 }
 
+double GridFrame::gap(int k, int axis, double lo, double hi) const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (inv_[axis] == 0) return 0;  // one slab holds every x
+  const Interval o(origin_[axis]), inv(inv_[axis]);
+  const double widen = 0x1p-48;
+  const double slab_lo =
+      k <= 0 ? -inf : (o + Interval(k) / inv * Interval(1 - widen)).lo - 0x1p-1000;
+  const double slab_hi =
+      k >= dims_[axis] - 1 ? inf : (o + Interval(k + 1) / inv * Interval(1 + widen)).hi + 0x1p-1000;
+  if (slab_lo > hi) return interval_detail::down(slab_lo - hi);
+  if (slab_hi < lo) return interval_detail::down(lo - slab_hi);
+  return 0;
+}
+
 PointGrid::PointGrid(std::span<const Point> points, double per_cell) {
   const std::size_t n = points.size();
   ids_.resize(n);

@@ -25,11 +25,14 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "check/interval.hpp"
 #include "geom/point.hpp"
 
 namespace pdr::check {
@@ -69,6 +72,13 @@ class GridFrame {
   double side() const { return side_; }  // typical cell side (0 if all points coincide)
   // The region of a cell, approximately (rounded): the extent of a nested frame.
   Box region(const std::array<int, 3>& c) const;
+  // A lower bound of |x - y| over every x whose cell on `axis` is k and every y in
+  // [lo, hi]. The slab of cell k holds x only if fl(fl(x - origin) * inv) lies in [k, k + 1)
+  // (or below, k = 0; or above, k = dims - 1): each rounding moves a value by at most
+  // 2^-53 of itself (plus a subnormal ulp), so x - origin lies in [k, k + 1] / inv widened
+  // by 2^-48 of itself and 2^-1000, which the interval arithmetic of interval.hpp then
+  // encloses. The slack is far above the rounding's, and costs nothing measurable.
+  double gap(int k, int axis, double lo, double hi) const;
 
  private:
   Point origin_{};
@@ -95,6 +105,20 @@ class PointGrid {
   void query(const Box& box, F&& f) const {
     if (!ids_.empty()) query_node(0, box, f);
   }
+  // f(id, point) for every stored point in the closed ball whose centre lies in `center`
+  // (per axis an interval) and whose squared radius is at most r2hi, once each, and some
+  // outside it: the cells of the ball's box, less rows of cells that provably miss it (a
+  // row (j, k) keeps the cells i whose x can be within sqrt(r2hi - gap_y^2 - gap_z^2) of
+  // the centre, every step rounded outward). A flat tet's circumball covers much of the
+  // mesh's box and little of the mesh: this visits what lies near the ball, not the box.
+  template <class F>
+  void query_ball(const IVec& center, double r2hi, F&& f) const {
+    if (ids_.empty() || !(r2hi >= 0) || !std::isfinite(r2hi)) {
+      if (!ids_.empty()) query(Box{{-kInf, -kInf, -kInf}, {kInf, kInf, kInf}}, f);
+      return;
+    }
+    query_ball_node(0, center, r2hi, f);
+  }
 
  private:
   struct Node {
@@ -117,6 +141,39 @@ class PointGrid {
         }
       }
   }
+  template <class F>
+  void query_ball_node(std::uint32_t n, const IVec& c, double r2hi, F& f) const {
+    using interval_detail::down, interval_detail::up;
+    const Node& node = nodes_[n];
+    const GridFrame& fr = node.frame;
+    const double r = up(std::sqrt(r2hi));
+    std::array<int, 3> a{}, b{};
+    for (int i = 0; i < 3; ++i) {
+      a[i] = fr.cell(down(c[i].lo - r), i);
+      b[i] = fr.cell(up(c[i].hi + r), i);
+    }
+    for (int k = a[2]; k <= b[2]; ++k) {
+      const double gz = fr.gap(k, 2, c[2].lo, c[2].hi), rz = down(gz * gz);
+      if (rz > r2hi) continue;
+      for (int j = a[1]; j <= b[1]; ++j) {
+        const double gy = fr.gap(j, 1, c[1].lo, c[1].hi), ryz = down(rz + down(gy * gy));
+        if (ryz > r2hi) continue;
+        const double sx = up(std::sqrt(std::max(0.0, up(r2hi - ryz))));
+        const int ia = std::max(a[0], fr.cell(down(c[0].lo - sx), 0));
+        const int ib = std::min(b[0], fr.cell(up(c[0].hi + sx), 0));
+        if (ia > ib) continue;
+        const std::size_t row = node.first + fr.index(0, j, k);
+        for (std::size_t cell = row + ia; cell <= row + ib; ++cell) {
+          if (child_[cell] >= 0) {
+            query_ball_node(static_cast<std::uint32_t>(child_[cell]), c, r2hi, f);
+            continue;
+          }
+          for (std::uint32_t s = begin_[cell]; s < begin_[cell + 1]; ++s) f(ids_[s], sorted_[s]);
+        }
+      }
+    }
+  }
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
   void build(std::span<const Point> points, const Box& extent, std::uint32_t b, std::uint32_t e,
              double per_cell, int depth);
 

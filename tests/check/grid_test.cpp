@@ -1,10 +1,13 @@
 // The checker's candidate grids (src/check/grid.hpp) against brute force: a point query
 // visits every stored point inside its box exactly once, and the box-pair enumeration
 // reports every intersecting pair exactly once, on clouds graded over many scales (the
-// shape of a mesh refined to a small gap), with coincident points and empty boxes. A query
-// inside a crowded patch visits few points: the grid nests where points crowd.
+// shape of a mesh refined to a small gap), with coincident points and empty boxes; a ball
+// query visits every point in the closed ball once, and few far from it. A query inside a
+// crowded patch visits few points: the grid nests where points crowd.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+
+#include <gmpxx.h>
 
 #include <cmath>
 #include <map>
@@ -73,6 +76,75 @@ RC_GTEST_PROP(Grid, PointQueriesVisitEveryPointInTheBoxOnce, ()) {
     for (std::uint32_t id = 0; id < p.size(); ++id)
       if (inside(p[id], b)) RC_ASSERT(seen.count(id) == 1u);
   }
+}
+
+// Whether p lies in the closed ball (centre c, squared radius r2), in exact rationals: the
+// oracle shares no arithmetic with the grid's outward rounding.
+bool in_ball_exact(const Point& p, const Point& c, double r2) {
+  mpq_class d2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const mpq_class d = mpq_class(p[i]) - mpq_class(c[i]);
+    d2 += d * d;
+  }
+  return d2 <= mpq_class(r2);
+}
+
+// Balls from tiny to far larger than the cloud, some centred far away so that only a cap
+// reaches it (a flat tet's circumball), some with a radius exactly a point's distance.
+RC_GTEST_PROP(Grid, BallQueriesVisitEveryPointInTheBallOnce, ()) {
+  const std::vector<Point> p = graded_cloud();
+  RC_PRE(!p.empty());
+  const PointGrid grid(p);
+  for (int q = 0; q < 40; ++q) {
+    const std::size_t i = *rc::gen::inRange<std::size_t>(0, p.size());
+    const double r = std::pow(10.0, *rc::gen::inRange(-14, 6));
+    Point c = p[i];
+    const int away = *rc::gen::inRange(0, 3);
+    if (away > 0) {  // the centre r (or r and a bit) away from p[i]: a cap of the ball
+      const double u = *rc::gen::inRange(-1000, 1000) / 1000.0, w = *rc::gen::inRange(-1000, 1000) / 1000.0;
+      const double n = std::sqrt(1 + u * u + w * w);
+      c = {p[i][0] + r / n, p[i][1] + r * u / n, p[i][2] + r * w / n};
+    }
+    double r2 = r * r;
+    if (away == 2) {  // the ball's sphere through p[i], as far as doubles allow
+      r2 = 0;
+      for (int a = 0; a < 3; ++a) r2 += (p[i][a] - c[a]) * (p[i][a] - c[a]);
+    }
+    const IVec centre = ivec(c);
+    std::map<std::uint32_t, int> seen;
+    grid.query_ball(centre, r2, [&](std::uint32_t id, const Point& x) {
+      RC_ASSERT(x == p[id]);
+      ++seen[id];
+    });
+    for (const auto& [id, n] : seen) RC_ASSERT(n == 1);
+    for (std::uint32_t id = 0; id < p.size(); ++id)
+      if (in_ball_exact(p[id], c, r2)) RC_ASSERT(seen.count(id) == 1u);
+  }
+}
+
+TEST(Grid, ABallQueryVisitsWhatLiesNearTheBall) {
+  // 20,000 points in the unit cube and a ball of radius 100 that cuts a cap 0.3 deep off
+  // the corner (1, 1, 1): its box holds the whole cube, the ball about 2% of it.
+  std::vector<Point> p;
+  std::uint64_t s = 777;
+  auto unit = [&] {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(s >> 11) / double(1ull << 53);
+  };
+  for (int i = 0; i < 20000; ++i) p.push_back({unit(), unit(), unit()});
+  const PointGrid grid(p);
+  const double t = 100, k = t / std::sqrt(3.0);
+  const Point c{1 + k, 1 + k, 1 + k};
+  const double r2 = (t + 0.3) * (t + 0.3);
+  std::size_t visited = 0, inside = 0;
+  grid.query_ball(ivec(c), r2, [&](std::uint32_t, const Point&) { ++visited; });
+  for (const Point& x : p) inside += in_ball_exact(x, c, r2) ? 1 : 0;
+  std::size_t boxed = 0;
+  grid.query(Box{{c[0] - t, c[1] - t, c[2] - t}, {c[0] + t, c[1] + t, c[2] + t}},
+             [&](std::uint32_t, const Point&) { ++boxed; });
+  EXPECT_EQ(boxed, p.size());
+  EXPECT_GT(inside, 100u);
+  EXPECT_LE(visited, 8 * inside) << inside << " inside";  // 2,721 visited for 487 inside
 }
 
 TEST(Grid, AQueryInACrowdedPatchVisitsFewPoints) {
