@@ -69,9 +69,14 @@ std::optional<std::vector<std::vector<double>>> sample_arcs(const std::vector<Sp
   // than kRounds (pieces 2^-60 of the longest) is given up like one past the cap.
   for (int round = 0;; ++round) {
     bool changed = false;
+    // An arc's ends are no samples of their own: the shell vertex there is its segment's
+    // (VertexZones::shell), whose direction is in `points`. The arc's end is that direction
+    // projected onto the facet's chart, which on a facet printed with few digits lies 1e-7
+    // radians off it, along another facet's arc, whose end pieces it then encroached at
+    // every size (a slot's apex printed with 7 digits: samples 1e-11 of the radius apart).
     std::vector<Point> all = points;
     for (std::size_t a = 0; a < arcs.size(); ++a)
-      for (const double x : t[a]) all.push_back(arcs[a].at(x));
+      for (std::size_t i = 1; i + 1 < t[a].size(); ++i) all.push_back(arcs[a].at(t[a][i]));
     for (std::size_t a = 0; a < arcs.size(); ++a) {
       std::vector<double> next{t[a].front()};
       for (std::size_t i = 0; i + 1 < t[a].size(); ++i) {

@@ -79,7 +79,8 @@ struct SphereArc {
 // The angles of samples on each arc, sorted, the first 0 and the last its length, such
 // that every piece between consecutive samples is at most max_piece long and its
 // spherical diametral cap (centred at its middle, of angular radius half its length) holds
-// no other sample of any arc nor any of `points` strictly inside (with a relative margin of
+// no other sample of any arc (an arc's ends excepted: they stand for its segments, whose
+// directions `points` must hold) nor any of `points` strictly inside (with a relative margin of
 // 1e-9: it places samples, it decides nothing). A piece at the end of its arc is split at
 // the power of two (in radians from that end) nearest its middle: arcs that share an end
 // (facets along one segment) then get samples at the same angles from it, which do not

@@ -129,6 +129,27 @@ TEST(SampleArcs, ArcsSharingAnEndGetTheSameAnglesFromIt) {
   EXPECT_EQ((*t)[0][1], std::exp2(std::round(std::log2((*t)[0][1]))));
 }
 
+TEST(SampleArcs, AnArcsEndOffItsSegmentDoesNotCrowdTheOtherArc) {
+  // Two facets at right angles along one segment (direction z). The second facet is
+  // printed with few digits: its chart's plane misses the segment by 1e-7 radians, so its
+  // arc starts at the segment's direction projected onto that plane, 1e-7 along the first
+  // arc. The shell vertex at that end is the segment's (direction z), not the projection:
+  // the projection must not encroach the first arc's end piece (it did, and the pieces
+  // there split down to 1e-11 of the shell's radius: a slot's apex printed with 7 digits,
+  // tests/regress/outside-slot-triangle-walls-rotated-7-digits-runaway.poly).
+  const Point s{0, 0, 1};
+  const auto at = [&](double phi, double polar) {
+    return Point{std::sin(polar) * std::cos(phi), std::sin(polar) * std::sin(phi), std::cos(polar)};
+  };
+  const Point a = at(0, 60 * kPi / 180), b = at(kPi / 2, 45 * kPi / 180);
+  const Point s_off = at(0, 1e-7);
+  const auto t = sample_arcs({arc(s, a), arc(s_off, b)}, {s, a, b}, kPi / 6, 1024);
+  ASSERT_TRUE(t.has_value());
+  EXPECT_LE((*t)[0].size(), 8u);
+  EXPECT_LE((*t)[1].size(), 8u);
+  EXPECT_GT((*t)[0][1], 1e-3);  // no sample crowding the shared end
+}
+
 // The lemma: with the shell vertices v + r u (u the samples), a shell vertex is strictly
 // inside the equatorial ball of the fan triangle (v, a, b) exactly when its direction is
 // strictly inside the piece's diametral cap (the ball meets the sphere in that cap), so
