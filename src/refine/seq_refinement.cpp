@@ -624,19 +624,22 @@ class Refiner {
         pending_size2_ = r2;
       }
     }
-    // A repair of a triangle at the ball's vertex v goes by the zone's rules also when its
-    // circumcenter encroaches a subsegment: a fan triangle (v, a, b) of the shell always
-    // encroaches its radial subsegments (its angle at v is below 90 degrees), and the split
-    // of (v, a) that Fig. 2 makes instead shrank the ball where the piece (a, b) is to be
-    // split on the sphere (a 1-degree slot turned and printed with 17 digits halved its
-    // apex's ball 30 times, down to 1e-12, NOT CONFORMING).
-    const auto at_ball_vertex = [&](std::uint32_t z) {
-      return x.v[0] == balls_.vertex(z) || x.v[1] == balls_.vertex(z) || x.v[2] == balls_.vertex(z);
+    // A repair of a subfacet with a shell piece (a, b) for an edge goes by the zone's rules
+    // also when its circumcenter encroaches a subsegment: the fan triangle (v, a, b) always
+    // encroaches its radial subsegments (its angle at v is below 90 degrees), and so can a
+    // triangle (a, b, c) just outside the shell; the split of (v, a) that Fig. 2 makes
+    // instead shrank the ball where the piece (a, b) is to be split on the sphere (slots
+    // of 1 degree turned and printed with 17 digits halved an apex's ball 18 to 30 times,
+    // down to 1e-12: NOT CONFORMING, or vertices 1e-9 from a segment).
+    const auto has_piece = [&](std::uint32_t z) {
+      for (int i = 0; i < 3; ++i)
+        if (balls_.has_piece(z, x.facet, x.v[(i + 1) % 3], x.v[(i + 2) % 3])) return true;
+      return false;
     };
     if (fc.status == surface::CavityStatus::Ok ||
         (below_floor && fc.status == surface::CavityStatus::Encroaches))
       if (const auto z = ball_for(fc.p, below_floor);
-          z && (fc.status == surface::CavityStatus::Ok || at_ball_vertex(*z))) {
+          z && (fc.status == surface::CavityStatus::Ok || has_piece(*z))) {
         pending_copies_.clear();
         if (!below_floor)
           give_up(t, ball_refusal(*z, fc.p));

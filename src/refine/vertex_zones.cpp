@@ -263,6 +263,20 @@ void VertexZones::record_segment(std::uint32_t zi, std::uint32_t segment, std::u
   }
 }
 
+bool VertexZones::has_piece(std::uint32_t zi, std::uint32_t f, std::uint32_t a,
+                            std::uint32_t b) const {
+  const Zone& z = zones_[zi];
+  if (!z.filled) return false;
+  for (const Arc& arc : z.arcs) {
+    if (arc.facet != f) continue;
+    for (std::uint32_t i = 0; i + 1 < arc.vertices.size(); ++i) {
+      const std::uint32_t x = arc.vertices[i], y = arc.vertices[i + 1];
+      if (x != kNone && y != kNone && ((x == a && y == b) || (x == b && y == a))) return true;
+    }
+  }
+  return false;
+}
+
 std::optional<VertexZones::ShellPoint> VertexZones::split_piece(std::uint32_t zi, std::uint32_t f,
                                                                 std::uint32_t a, std::uint32_t b) {
   Zone& z = zones_[zi];

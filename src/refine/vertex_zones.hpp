@@ -138,6 +138,8 @@ class VertexZones {
   // shells too), as the point to insert.
   std::optional<ShellPoint> split_piece(std::uint32_t z, std::uint32_t f, std::uint32_t a,
                                         std::uint32_t b);
+  // Whether split_piece(z, f, a, b) would find that piece (and change nothing).
+  bool has_piece(std::uint32_t z, std::uint32_t f, std::uint32_t a, std::uint32_t b) const;
   // Halves zone z's radius and empties its shell; false (nothing changed) when the new
   // radius would be below `floor` or below 2^-40 of the first.
   bool shrink(std::uint32_t z, double floor);
