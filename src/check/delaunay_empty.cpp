@@ -11,7 +11,8 @@
 // not a vertex of the tet and not provably outside the enclosure (surely_outside, a few
 // flops) gets an exact insphere sign, multiplied by the tet's exact orientation so the
 // verdict does not depend on the recorded vertex order. Degenerate tets are skipped
-// (validity.orientation reports them). Counts: candidates (in the box), signs_evaluated.
+// (validity.orientation reports them). Counts: candidates (points in the box that the query
+// visited: a large ball's query skips rows of cells that miss it), signs_evaluated.
 #include <algorithm>
 
 #include "check/checks.hpp"

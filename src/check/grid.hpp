@@ -154,10 +154,11 @@ class PointGrid {
     }
     for (int k = a[2]; k <= b[2]; ++k) {
       const double gz = fr.gap(k, 2, c[2].lo, c[2].hi), rz = down(gz * gz);
-      if (rz > r2hi) continue;
+      // (NaN only when the square overflows: then the row misses the ball too.)
+      if (!(rz <= r2hi)) continue;
       for (int j = a[1]; j <= b[1]; ++j) {
         const double gy = fr.gap(j, 1, c[1].lo, c[1].hi), ryz = down(rz + down(gy * gy));
-        if (ryz > r2hi) continue;
+        if (!(ryz <= r2hi)) continue;
         const double sx = up(std::sqrt(std::max(0.0, up(r2hi - ryz))));
         const int ia = std::max(a[0], fr.cell(down(c[0].lo - sx), 0));
         const int ib = std::min(b[0], fr.cell(up(c[0].hi + sx), 0));

@@ -636,16 +636,23 @@ class Refiner {
         if (balls_.has_piece(z, x.facet, x.v[(i + 1) % 3], x.v[(i + 2) % 3])) return true;
       return false;
     };
-    if (fc.status == surface::CavityStatus::Ok ||
-        (below_floor && fc.status == surface::CavityStatus::Encroaches))
-      if (const auto z = ball_for(fc.p, below_floor);
-          z && (fc.status == surface::CavityStatus::Ok || has_piece(*z))) {
+    // (The circumcenter of such a repair is not inserted: it turns no dormant ball on.)
+    const bool ok = fc.status == surface::CavityStatus::Ok;
+    if (ok || (below_floor && fc.status == surface::CavityStatus::Encroaches))
+      if (const auto z = ok ? ball_for(fc.p, below_floor) : active_ball_of(fc.p);
+          z && (ok || has_piece(*z))) {
         pending_copies_.clear();
-        if (!below_floor)
+        if (!below_floor) {
           give_up(t, ball_refusal(*z, fc.p));
-        else if (auto why = zone_repair(*z, f, fc.p))
+          return;
+        }
+        auto why = zone_repair(*z, f, fc.p);
+        if (!why) return;
+        // Nothing went in: an encroached subsegment is still split as Fig. 2 would.
+        if (ok) {
           give_up(t, std::move(*why));
-        return;
+          return;
+        }
       }
     insert_on_facet(fc, hint, t, below_floor, r2, f);
     pending_copies_.clear();  // not inserted: no copies

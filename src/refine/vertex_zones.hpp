@@ -138,7 +138,8 @@ class VertexZones {
   // shells too), as the point to insert.
   std::optional<ShellPoint> split_piece(std::uint32_t z, std::uint32_t f, std::uint32_t a,
                                         std::uint32_t b);
-  // Whether split_piece(z, f, a, b) would find that piece (and change nothing).
+  // Whether a and b are consecutive shell vertices of an arc of f in zone z, the piece
+  // split_piece looks for (it may still find no angle to split it at); changes nothing.
   bool has_piece(std::uint32_t z, std::uint32_t f, std::uint32_t a, std::uint32_t b) const;
   // Halves zone z's radius and empties its shell; false (nothing changed) when the new
   // radius would be below `floor` or below 2^-40 of the first.
