@@ -277,7 +277,7 @@ TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
 
 // Replays of tests/regress/outside-*.poly and outside-*.off, one test each; a known open bug
 // is registered DISABLED_ with the bug named in its file.
-const std::vector<std::string> kKnownBugs = {};
+const std::vector<std::string> kKnownBugs = {"outside-crumpled-top-seed-41-edge-cascade.poly"};
 // Replays of more than about ten seconds (tests/refine/CMakeLists.txt runs them, labelled
 // slow): a crumpled top whose folds make 560K tets of surface refinement (19 s).
 const std::vector<std::string> kSlow = {"outside-crumpled-top-split-not-star.off"};
