@@ -95,7 +95,8 @@ CheckResult check_subfacets_unencroached(const Context& c) {
       std::int64_t first = -1;
       std::uint64_t inside = 0;
       c.grid.query(box, [&](std::uint32_t v, const Point& p) {
-        if (v == t[0] || v == t[1] || v == t[2] || !in_box(box, p) || surely_outside(ball, p)) return;
+        if (v == t[0] || v == t[1] || v == t[2] || !in_box(box, p) || surely_outside(ball, p))
+          return;
         const Sign s = signs::equatorial(pa, pb, pc, p);
         if (s == Sign::Zero) ++on_sphere;
         if (s != Sign::Positive) return;

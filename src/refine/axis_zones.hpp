@@ -50,10 +50,10 @@
 // holds them. A group coplanar only within the tolerance drops the copies outside the
 // facet through s: placed on the other facets' planes, a few 1e-10 radians apart, they
 // left flat tets along the crease of a rotated star prism printed with 9 digits.
-// A lone triangle facet never holds the strip; on a scanned surface folded to dihedrals of one degree
-// (a public test model, cheburashka), zones of triangle walls made copies that skipped most
-// walls and cascaded to the vertex cap (400,000 vertices in 17 s, where plain repairs end
-// at 220,000). Floating point says where the copies go (place_on_facet puts them on the
+// A lone triangle facet never holds the strip; on a scanned surface folded to dihedrals of
+// one degree (a public test model, cheburashka), zones of triangle walls made copies that
+// skipped most walls and cascaded to the vertex cap (400,000 vertices in 17 s, where plain
+// repairs end at 220,000). Floating point says where the copies go (place_on_facet puts them on the
 // facet's plane); exact predicates decide everything about them.
 #pragma once
 

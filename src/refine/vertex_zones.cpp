@@ -263,44 +263,45 @@ void VertexZones::record_segment(std::uint32_t zi, std::uint32_t segment, std::u
   }
 }
 
-bool VertexZones::has_piece(std::uint32_t zi, std::uint32_t f, std::uint32_t a,
-                            std::uint32_t b) const {
+std::optional<std::pair<std::uint32_t, std::uint32_t>> VertexZones::find_piece(
+    std::uint32_t zi, std::uint32_t f, std::uint32_t a, std::uint32_t b) const {
   const Zone& z = zones_[zi];
-  if (!z.filled) return false;
-  for (const Arc& arc : z.arcs) {
+  if (!z.filled) return std::nullopt;
+  for (std::uint32_t k = 0; k < z.arcs.size(); ++k) {
+    const Arc& arc = z.arcs[k];
     if (arc.facet != f) continue;
     for (std::uint32_t i = 0; i + 1 < arc.vertices.size(); ++i) {
       const std::uint32_t x = arc.vertices[i], y = arc.vertices[i + 1];
-      if (x != kNone && y != kNone && ((x == a && y == b) || (x == b && y == a))) return true;
+      if (x != kNone && y != kNone && ((x == a && y == b) || (x == b && y == a)))
+        return std::pair{k, i};
     }
   }
-  return false;
+  return std::nullopt;
+}
+
+bool VertexZones::has_piece(std::uint32_t zi, std::uint32_t f, std::uint32_t a,
+                            std::uint32_t b) const {
+  return find_piece(zi, f, a, b).has_value();
 }
 
 std::optional<VertexZones::ShellPoint> VertexZones::split_piece(std::uint32_t zi, std::uint32_t f,
                                                                 std::uint32_t a, std::uint32_t b) {
+  const auto piece = find_piece(zi, f, a, b);
+  if (!piece) return std::nullopt;
+  const auto [k, i] = *piece;
   Zone& z = zones_[zi];
-  if (!z.filled) return std::nullopt;
-  for (std::uint32_t k = 0; k < z.arcs.size(); ++k) {
-    Arc& arc = z.arcs[k];
-    if (arc.facet != f) continue;
-    for (std::uint32_t i = 0; i + 1 < arc.vertices.size(); ++i) {
-      const std::uint32_t x = arc.vertices[i], y = arc.vertices[i + 1];
-      if (x == kNone || y == kNone || !((x == a && y == b) || (x == b && y == a))) continue;
-      const double t = split_angle(arc.angles[i], arc.angles[i + 1], arc.geometry.length);
-      if (!(t > arc.angles[i] && t < arc.angles[i + 1])) return std::nullopt;
-      arc.angles.insert(arc.angles.begin() + i + 1, t);
-      arc.vertices.insert(arc.vertices.begin() + i + 1, kNone);
-      ShellPoint s;
-      s.facet = f;
-      s.arc = k;
-      s.sample = i + 1;
-      const Point u = arc.geometry.at(t);
-      for (int c = 0; c < 3; ++c) s.p[c] = z.v[c] + z.r * u[c];
-      return s;
-    }
-  }
-  return std::nullopt;
+  Arc& arc = z.arcs[k];
+  const double t = split_angle(arc.angles[i], arc.angles[i + 1], arc.geometry.length);
+  if (!(t > arc.angles[i] && t < arc.angles[i + 1])) return std::nullopt;
+  arc.angles.insert(arc.angles.begin() + i + 1, t);
+  arc.vertices.insert(arc.vertices.begin() + i + 1, kNone);
+  ShellPoint s;
+  s.facet = f;
+  s.arc = k;
+  s.sample = i + 1;
+  const Point u = arc.geometry.at(t);
+  for (int c = 0; c < 3; ++c) s.p[c] = z.v[c] + z.r * u[c];
+  return s;
 }
 
 void VertexZones::activate(std::uint32_t zi, double bound) {

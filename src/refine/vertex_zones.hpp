@@ -61,6 +61,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "geom/point.hpp"
@@ -148,6 +149,12 @@ class VertexZones {
   double radius(std::uint32_t z) const { return zones_[z].r; }
 
  private:
+  // The arc of f and the index i of the piece (a, b) = (vertices[i], vertices[i + 1]) of
+  // zone z's shell, in either order.
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> find_piece(std::uint32_t z,
+                                                                    std::uint32_t f,
+                                                                    std::uint32_t a,
+                                                                    std::uint32_t b) const;
   struct Arc {
     std::uint32_t facet = 0;
     SphereArc geometry;

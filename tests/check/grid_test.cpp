@@ -78,6 +78,15 @@ RC_GTEST_PROP(Grid, PointQueriesVisitEveryPointInTheBoxOnce, ()) {
   }
 }
 
+// Deterministic uniform doubles in [0, 1) for the fixed clouds (a 64-bit LCG's top bits).
+struct Lcg {
+  std::uint64_t s;
+  double operator()() {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(s >> 11) / double(1ull << 53);
+  }
+};
+
 // Whether p lies in the closed ball (centre c, squared radius r2), in exact rationals: the
 // oracle shares no arithmetic with the grid's outward rounding.
 bool in_ball_exact(const Point& p, const Point& c, double r2) {
@@ -101,7 +110,8 @@ RC_GTEST_PROP(Grid, BallQueriesVisitEveryPointInTheBallOnce, ()) {
     Point c = p[i];
     const int away = *rc::gen::inRange(0, 3);
     if (away > 0) {  // the centre r (or r and a bit) away from p[i]: a cap of the ball
-      const double u = *rc::gen::inRange(-1000, 1000) / 1000.0, w = *rc::gen::inRange(-1000, 1000) / 1000.0;
+      const double u = *rc::gen::inRange(-1000, 1000) / 1000.0;
+      const double w = *rc::gen::inRange(-1000, 1000) / 1000.0;
       const double n = std::sqrt(1 + u * u + w * w);
       c = {p[i][0] + r / n, p[i][1] + r * u / n, p[i][2] + r * w / n};
     }
@@ -126,11 +136,7 @@ TEST(Grid, ABallQueryVisitsWhatLiesNearTheBall) {
   // 20,000 points in the unit cube and a ball of radius 100 that cuts a cap 0.3 deep off
   // the corner (1, 1, 1): its box holds the whole cube, the ball about 2% of it.
   std::vector<Point> p;
-  std::uint64_t s = 777;
-  auto unit = [&] {
-    s = s * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<double>(s >> 11) / double(1ull << 53);
-  };
+  Lcg unit{777};
   for (int i = 0; i < 20000; ++i) p.push_back({unit(), unit(), unit()});
   const PointGrid grid(p);
   const double t = 100, k = t / std::sqrt(3.0);
@@ -151,11 +157,7 @@ TEST(Grid, AQueryInACrowdedPatchVisitsFewPoints) {
   // 100,000 points in a patch 1e-6 wide inside a unit cube of 2,000: a uniform grid puts the
   // patch in one cell.
   std::vector<Point> p;
-  std::uint64_t s = 12345;
-  auto unit = [&] {
-    s = s * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<double>(s >> 11) / double(1ull << 53);
-  };
+  Lcg unit{12345};
   for (int i = 0; i < 2000; ++i) p.push_back({unit(), unit(), unit()});
   for (int i = 0; i < 100000; ++i) p.push_back({0.5 + 1e-6 * unit(), 0.5 + 1e-6 * unit(), 0.5 + 1e-6 * unit()});
   const PointGrid grid(p);

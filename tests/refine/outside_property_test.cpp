@@ -252,7 +252,8 @@ TEST(OutsideProperty, SlotsWithTriangleWallsEndConforming) {
       // then coplanar only within the tolerance.
       const auto turn = [] { return *rc::gen::inRange(0, 628) / 100.0; };
       const double a = turn(), b = turn(), c = turn();
-      plc = printed(rotated(std::move(plc), a, b, c), *rc::gen::elementOf(std::vector<int>{17, 9, 7}));
+      const int digits = *rc::gen::elementOf(std::vector<int>{17, 9, 7});
+      plc = printed(rotated(std::move(plc), a, b, c), digits);
     }
     const Sizing z = *gen_fine_sizing(plc);
     judge_outside("SlotsWithTriangleWallsEndConforming", plc, z,
