@@ -352,12 +352,23 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
     }
     return d;
   };
+  // A facet given within the planarity tolerance is a slab, not a plane, and a face
+  // between two tets can have its corners in it without lying in the facet: the upper
+  // faces of a flat tet on the facet (all four corners in the slab, next to an input vertex
+  // off the plane), stacked over its lower face, or a small face tilted across the slab
+  // with both its tets on the same side. A face in such a facet between two tets is in it
+  // only when the two tets lie on opposite sides: each one's fourth corner off the slab,
+  // on opposite sides of the facet's plane (a face of one tet, on the mesh's boundary, is
+  // in it as in an exact facet).
+  struct Candidate {
+    std::uint32_t face, facet;
+    double distance;
+  };
+  std::vector<Candidate> candidates;
   for (std::size_t fid = 0; fid < topo.faces.size(); ++fid) {
     const Tri& t = topo.faces[fid];
     const auto l0 = facets_of(t[0]), l1 = facets_of(t[1]), l2 = facets_of(t[2]);
     if (l0.empty() || l1.empty() || l2.empty()) continue;
-    std::optional<std::uint32_t> in;
-    double nearest = 0;
     for (std::uint32_t fi : l0) {
       if (!std::binary_search(l1.begin(), l1.end(), fi) ||
           !std::binary_search(l2.begin(), l2.end(), fi))
@@ -380,12 +391,34 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
             return locate_in_polygon(tri, q) != Where::Outside;
           }))
         continue;
-      const double dist = distance(f, t);
-      if (!in || dist < nearest) in = fi, nearest = dist;
+      candidates.push_back({static_cast<std::uint32_t>(fid), fi, distance(f, t)});
+    }
+  }
+  // The side of f's plane of the corner of tet `r` opposite its face: 0 in the slab.
+  const auto side = [&](const FacetMap& f, const FaceRef& r) {
+    const std::uint32_t v = mesh.tets[r.tet][r.local];
+    if (std::binary_search(f.on_plane.begin(), f.on_plane.end(), v)) return 0;
+    const Vec w = sub(mesh.points[v], f.plane_origin);
+    const double d = f.plane_normal[0] * w[0] + f.plane_normal[1] * w[1] + f.plane_normal[2] * w[2];
+    return d > 0 ? 1 : d < 0 ? -1 : 0;
+  };
+  for (std::size_t i = 0; i < candidates.size();) {
+    const std::uint32_t fid = candidates[i].face;
+    std::optional<std::uint32_t> in;
+    double nearest = 0;
+    for (; i < candidates.size() && candidates[i].face == fid; ++i) {
+      const Candidate& c = candidates[i];
+      const FacetMap& f = m.facets[c.facet];
+      const auto holders = topo.holders(fid);
+      if (f.tolerance_vertices > 0 && holders.size() == 2) {
+        const int a = side(f, holders[0]), b = side(f, holders[1]);
+        if (a == 0 || b == 0 || a == b) continue;
+      }
+      if (!in || c.distance < nearest) in = c.facet, nearest = c.distance;
     }
     if (!in) continue;
-    m.facets[*in].faces.push_back(static_cast<std::uint32_t>(fid));
-    m.subfacets.push_back(static_cast<std::uint32_t>(fid));
+    m.facets[*in].faces.push_back(fid);
+    m.subfacets.push_back(fid);
     m.face_in_facet[fid] = 1;
   }
   std::sort(m.subfacets.begin(), m.subfacets.end());

@@ -191,6 +191,48 @@ TEST(Conformity, SliverAcrossANearlyFlatFoldIsNotInTheFacet) {
   EXPECT_TRUE(without.contains("conformity.facets") && without.contains("conformity.volume"));
 }
 
+// A pyramid over a square base given as one facet ABCD, D raised 1e-10 (coplanar only
+// within the tolerance), meshed with a flat tet ABCQ on the base: Q lies 1e-11 above
+// ABC's plane, so all four corners are within the tolerance of the facet and so are the
+// flat tet's upper faces ABQ, BCQ and CAQ, between it and the tets to the apex. Those
+// are faces of a stack in the facet's slab, not subfacets: the facet is covered once, by
+// the boundary faces ABC and ACD (they were counted too, and the facet covered about
+// twice, as pdr's own meshes of a scanned model with 6-digit coordinates were reported).
+// (The mesh is no Delaunay one: only conformity is asked of it.)
+TEST(Conformity, FacesOfAFlatTetOnAToleranceFacetAreNotSubfacets) {
+  Plc d;
+  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1}, {0.6, 0.3, 1e-11}};
+  for (const std::vector<std::uint32_t>& f : std::vector<std::vector<std::uint32_t>>{
+           {0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}) {
+    PlcFacet g;
+    g.polygons.push_back(f);
+    d.facets.push_back(g);
+  }
+  MeshData m;
+  m.points = d.points;
+  d.points.pop_back();  // Q is the mesh's, not the domain's
+  const auto orient = [&](std::array<std::uint32_t, 4> t) {
+    const auto& p = m.points;
+    const auto sub = [&](std::uint32_t a, std::uint32_t b) {
+      return std::array<double, 3>{p[a][0] - p[b][0], p[a][1] - p[b][1], p[a][2] - p[b][2]};
+    };
+    const auto u = sub(t[1], t[0]), v = sub(t[2], t[0]), w = sub(t[3], t[0]);
+    const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                       u[2] * (v[0] * w[1] - v[1] * w[0]);
+    if (det < 0) std::swap(t[0], t[1]);
+    return t;
+  };
+  for (const auto& t : std::vector<std::array<std::uint32_t, 4>>{
+           {0, 1, 2, 5}, {0, 1, 5, 4}, {1, 2, 5, 4}, {2, 0, 5, 4}, {0, 2, 3, 4}})
+    m.tets.push_back(orient(t));
+  const Report r = run(m, d);
+  for (const char* id : {"validity.orientation", "validity.overlap", "conformity.vertices",
+                         "conformity.segments", "conformity.facets", "conformity.volume"})
+    EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
+  EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 2u + 4u);
+  EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
+}
+
 TEST(FacetRegion, NestedPolygonWithHoleIsARing) {
   const std::vector<P2> outer = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
   const std::vector<P2> inner = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
