@@ -52,22 +52,25 @@ CoordinatePrecision infer_precision(std::span<const Point> points) {
       full = digits > 15 && !floats;
     }
   }
-  double relative = 0;
+  // The rounding of the largest coordinate: half a unit in its last place, that is the
+  // relative rounding times the place of its leading digit (a power of ten for decimals,
+  // of two for floats); every smaller coordinate is rounded at that place or finer.
+  double rounding = 0;
   if (full) {
     out.digits = 17;
-    relative = kComputedRounding;
+    rounding = kComputedRounding * largest;
   } else {
     out.digits = digits;
     if (digits <= kExactDigits) return out;  // short decimals: exact values
     if (digits > 9 && floats) {
       out.float32 = true;
-      relative = std::ldexp(1.0, -24);
+      rounding = std::ldexp(1.0, std::ilogb(largest) - 24);
     } else {
-      relative = 5 * std::pow(10.0, -digits);
+      rounding = 5 * std::pow(10.0, std::floor(std::log10(largest)) - digits);
     }
   }
   const double diameter = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-  out.uncertainty = std::min(relative * std::sqrt(3.0) * largest, kMaxUncertainty * diameter);
+  out.uncertainty = std::min(rounding * std::sqrt(3.0), kMaxUncertainty * diameter);
   return out;
 }
 

@@ -18,8 +18,11 @@
 //   - 16 or 17: full double precision, coordinates computed in double (a rotation): a few
 //     units in the last place, kComputedRounding relative (negligible next to the relative
 //     tolerance, except far from the origin: a part at 1e7 has its coordinates to 2e-9).
-// The uncertainty of a point is then that relative rounding times sqrt(3) times the largest
-// coordinate magnitude: how far rounding may have moved any vertex; but at most
+// The uncertainty of a point is then sqrt(3) times the rounding of the largest coordinate:
+// the relative rounding times the place of its leading digit (0.95 printed with 6 digits
+// is rounded to 5e-7, not 5e-6 times 0.95: a scanned model's small triangles then read
+// as coplanar within 10 times their actual rounding, and their real bends of a degree as
+// creases of one plane); how far rounding may have moved any vertex; but at most
 // kMaxUncertainty (1e-5) times the domain's diameter (its bounding box's diagonal). The
 // digits cannot tell exact values from rounded ones: integers from 100000 to 100010 have
 // 6 digits, as a 6-digit print of a part at 1e5 would, and read as rounded they would make

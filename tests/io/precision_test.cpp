@@ -52,29 +52,54 @@ TEST(Precision, FullDoublesHaveTheirOwnRounding) {
   EXPECT_DOUBLE_EQ(p.uncertainty, kComputedRounding * std::sqrt(3.0) * largest(pts));
 }
 
+// How far a point moved (the distance between its exact and its stored coordinates).
+double moved(const Point& a, const Point& b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+// The uncertainty is the rounding of the largest coordinate, half a unit in its last place
+// (sqrt(3) for a point): it bounds how far every point moved, and is no coarser than that
+// place (it was 5 * 10^-digits times the largest coordinate, up to 10 times the rounding
+// of coordinates below 1, which read a scanned model's real bends of a degree as
+// rounding).
 TEST(Precision, PrintedDigitsGiveTheirRounding) {
-  for (const int digits : {6, 7, 9, 12, 15}) {
-    std::vector<Point> pts = rotated_points(50, 2);
-    for (Point& p : pts)
-      for (double& x : p) x = printed(x, digits);
-    const CoordinatePrecision p = infer_precision(pts);
-    EXPECT_EQ(p.digits, digits);
-    EXPECT_FALSE(p.float32);
-    EXPECT_DOUBLE_EQ(p.uncertainty, 5 * std::pow(10.0, -digits) * std::sqrt(3.0) * largest(pts));
-  }
+  for (const double scale : {1.0, 0.95, 0.12, 37.0})
+    for (const int digits : {6, 7, 9, 12, 15}) {
+      const std::vector<Point> exact = rotated_points(50, 2);
+      std::vector<Point> pts = exact;
+      double moved_most = 0;
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        Point e = exact[i];
+        for (int k = 0; k < 3; ++k) e[k] *= scale, pts[i][k] = printed(e[k], digits);
+        moved_most = std::max(moved_most, moved(e, pts[i]));
+      }
+      const CoordinatePrecision p = infer_precision(pts);
+      EXPECT_EQ(p.digits, digits);
+      EXPECT_FALSE(p.float32);
+      const double place = std::pow(10.0, std::floor(std::log10(largest(pts))));
+      EXPECT_DOUBLE_EQ(p.uncertainty, 5 * std::pow(10.0, -digits) * place * std::sqrt(3.0))
+          << scale << " " << digits;
+      EXPECT_LE(moved_most, p.uncertainty) << scale << " " << digits;
+    }
 }
 
 TEST(Precision, FloatsAreFloat32) {
-  std::vector<Point> pts = rotated_points(50, 3);
-  for (Point& p : pts)
-    for (double& x : p) {
+  const std::vector<Point> exact = rotated_points(50, 3);
+  std::vector<Point> pts = exact;
+  double moved_most = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    for (double& x : pts[i]) {
       // Through a volatile: GCC 12 at -O2 and above vectorizes this round trip away.
       const volatile float f = static_cast<float>(x);
       x = f;
     }
+    moved_most = std::max(moved_most, moved(exact[i], pts[i]));
+  }
   const CoordinatePrecision p = infer_precision(pts);
   EXPECT_TRUE(p.float32);
-  EXPECT_DOUBLE_EQ(p.uncertainty, std::ldexp(1.0, -24) * std::sqrt(3.0) * largest(pts));
+  EXPECT_DOUBLE_EQ(p.uncertainty,
+                   std::ldexp(1.0, std::ilogb(largest(pts)) - 24) * std::sqrt(3.0));
+  EXPECT_LE(moved_most, p.uncertainty);
 }
 
 TEST(Precision, ExactClassificationInfersNothing) {
