@@ -112,7 +112,14 @@ void VertexZones::add(const surface::SurfaceMesh& m, std::uint32_t v, double bou
   z.vertex = v;
   z.v = m.point(v);
   z.r = z.r0 = std::exp2(std::floor(std::log2(bound)));
-  for (std::uint32_t s = 0; s < m.segments.size(); ++s) {
+  // The segments at v, in index order: those of its subsegments (an input vertex ends
+  // every segment it lies on; a scan of all segments per vertex was quadratic, 8% of a
+  // scanned model's run).
+  std::vector<std::uint32_t> at_v;
+  for (const std::uint32_t g : m.vertex_subsegments(v)) at_v.push_back(m.subsegment(g).segment);
+  std::sort(at_v.begin(), at_v.end());
+  at_v.erase(std::unique(at_v.begin(), at_v.end()), at_v.end());
+  for (const std::uint32_t s : at_v) {
     const surface::SurfaceSegment& g = m.segments[s];
     if (g.a != v && g.b != v) continue;
     z.segments.emplace_back(s, unit(sub(m.point(g.a == v ? g.b : g.a), z.v)));
