@@ -356,15 +356,18 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
   // between two tets can have its corners in it without lying in the facet: the upper
   // faces of a flat tet on the facet (all four corners in the slab, next to an input vertex
   // off the plane), stacked over its lower face, or a small face tilted across the slab
-  // with both its tets on the same side. A face in such a facet between two tets is in it
-  // only when the two tets lie on opposite sides: each one's fourth corner off the slab,
-  // on opposite sides of the facet's plane (a face of one tet, on the mesh's boundary, is
-  // in it as in an exact facet).
+  // with both its tets on the same side. Where the facet bounds the mesh (a face in it
+  // belongs to one tet alone), its subfacets are such faces, and a face in it between two
+  // tets is in it only when the two tets lie on opposite sides: each one's fourth corner
+  // off the slab, on opposite sides of the facet's plane. (Between two regions every face
+  // in the slab stays a candidate: there a thin tet's lower face is the subfacet, and its
+  // fourth corner lies in the slab.)
   struct Candidate {
     std::uint32_t face, facet;
     double distance;
   };
   std::vector<Candidate> candidates;
+  std::vector<std::uint8_t> bounds_mesh(m.facets.size(), 0);
   for (std::size_t fid = 0; fid < topo.faces.size(); ++fid) {
     const Tri& t = topo.faces[fid];
     const auto l0 = facets_of(t[0]), l1 = facets_of(t[1]), l2 = facets_of(t[2]);
@@ -392,6 +395,7 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
           }))
         continue;
       candidates.push_back({static_cast<std::uint32_t>(fid), fi, distance(f, t)});
+      if (topo.holders(fid).size() == 1) bounds_mesh[fi] = 1;
     }
   }
   // The side of f's plane of the corner of tet `r` opposite its face: 0 in the slab.
@@ -410,7 +414,7 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
       const Candidate& c = candidates[i];
       const FacetMap& f = m.facets[c.facet];
       const auto holders = topo.holders(fid);
-      if (f.tolerance_vertices > 0 && holders.size() == 2) {
+      if (f.tolerance_vertices > 0 && bounds_mesh[c.facet] && holders.size() == 2) {
         const int a = side(f, holders[0]), b = side(f, holders[1]);
         if (a == 0 || b == 0 || a == b) continue;
       }
