@@ -343,13 +343,13 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
   // one: where several take it (two facets at a thin notch, each within the other's
   // tolerance near their common segment), it goes to the one whose plane its corners lie
   // nearest.
+  const auto signed_distance = [&](const FacetMap& f, std::uint32_t v) {
+    const Vec w = sub(mesh.points[v], f.plane_origin);
+    return f.plane_normal[0] * w[0] + f.plane_normal[1] * w[1] + f.plane_normal[2] * w[2];
+  };
   const auto distance = [&](const FacetMap& f, const Tri& t) {
     double d = 0;
-    for (const std::uint32_t v : t) {
-      const Vec w = sub(mesh.points[v], f.plane_origin);
-      d = std::max(d, std::fabs(f.plane_normal[0] * w[0] + f.plane_normal[1] * w[1] +
-                                f.plane_normal[2] * w[2]));
-    }
+    for (const std::uint32_t v : t) d = std::max(d, std::fabs(signed_distance(f, v)));
     return d;
   };
   // A facet given within the planarity tolerance is a slab, not a plane, and a face
@@ -402,8 +402,7 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
   const auto side = [&](const FacetMap& f, const FaceRef& r) {
     const std::uint32_t v = mesh.tets[r.tet][r.local];
     if (std::binary_search(f.on_plane.begin(), f.on_plane.end(), v)) return 0;
-    const Vec w = sub(mesh.points[v], f.plane_origin);
-    const double d = f.plane_normal[0] * w[0] + f.plane_normal[1] * w[1] + f.plane_normal[2] * w[2];
+    const double d = signed_distance(f, v);
     return d > 0 ? 1 : d < 0 ? -1 : 0;
   };
   for (std::size_t i = 0; i < candidates.size();) {

@@ -53,8 +53,8 @@
 // A lone triangle facet never holds the strip; on a scanned surface folded to dihedrals of
 // one degree (a public test model, cheburashka), zones of triangle walls made copies that
 // skipped most walls and cascaded to the vertex cap (400,000 vertices in 17 s, where plain
-// repairs end at 220,000). Floating point says where the copies go (place_on_facet puts them on the
-// facet's plane); exact predicates decide everything about them.
+// repairs end at 220,000). Floating point says where the copies go (place_on_facet puts
+// them on the facet's plane); exact predicates decide everything about them.
 #pragma once
 
 #include <cstdint>

@@ -211,18 +211,13 @@ TEST(Conformity, FacesOfAFlatTetOnAToleranceFacetAreNotSubfacets) {
   MeshData m;
   m.points = d.points;
   d.points.pop_back();  // Q is the mesh's, not the domain's
-  const auto orient = [&](std::array<std::uint32_t, 4> t) {
+  const auto orient = [&](Tet t) {
     const auto& p = m.points;
-    const auto sub = [&](std::uint32_t a, std::uint32_t b) {
-      return std::array<double, 3>{p[a][0] - p[b][0], p[a][1] - p[b][1], p[a][2] - p[b][2]};
-    };
-    const auto u = sub(t[1], t[0]), v = sub(t[2], t[0]), w = sub(t[3], t[0]);
-    const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                       u[2] * (v[0] * w[1] - v[1] * w[0]);
-    if (det < 0) std::swap(t[0], t[1]);
+    if (exact::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) == Sign::Negative)
+      std::swap(t[0], t[1]);
     return t;
   };
-  for (const auto& t : std::vector<std::array<std::uint32_t, 4>>{
+  for (const Tet& t : std::vector<Tet>{
            {0, 1, 2, 5}, {0, 1, 5, 4}, {1, 2, 5, 4}, {2, 0, 5, 4}, {0, 2, 3, 4}})
     m.tets.push_back(orient(t));
   const Report r = run(m, d);
