@@ -53,7 +53,8 @@ class Refiner {
     res_.stats.vertex_cap = budget_.cap();
     const std::size_t points_at_start = m_.dt.num_points();
     res_.stats.h = std::numeric_limits<double>::infinity();
-    // The theorem's h where its hypotheses hold: exactly, with T_o holding every subsegment
+    // The theorem's h where its hypotheses hold: B >= 2 (its proof needs a refined tet's
+    // shortest edge below half its circumradius), exactly, with T_o holding every subsegment
     // and subfacet of D (§2.1 property 1) and none of them encroached (invariant 1 at the
     // start, the base case of Lemma 1). Rounded input can miss either by an ulp (a vertex a
     // hair inside an equatorial ball it should lie on); the repairs that follow are no step
@@ -65,7 +66,7 @@ class Refiner {
     if (o_.admissible && !o_.resumed_h) encroached_at_start(at_start);
     if (o_.resumed_h)
       res_.stats.h_theorem = *o_.resumed_h;
-    else if (o_.admissible && o_.exact_theory && m_.missing_subfacets.empty() &&
+    else if (o_.admissible && o_.exact_theory && o_.ratio >= 2 && m_.missing_subfacets.empty() &&
              m_.missing_subsegments.empty() && at_start.subsegments.empty() &&
              at_start.subfacets.empty())
       res_.stats.h_theorem = theorem_h(shortest_inside_edge(m_), o_);

@@ -174,9 +174,9 @@ struct RefineStats {
   std::size_t flag_conflicts = 0;       // faces where parity across D disagreed at the end
   double h = 0;  // min over refinements of (l/2, R_f/√2, R_t/2): the largest h the run met
   // Theorem 1's h, a priori (from T_o and the size bounds, before any refinement; see
-  // theorem_h in seq_refinement.cpp), when the hypotheses hold (RefineOptions::exact_theory
-  // and T_o conforms), else 0: the audit holds every new edge to it, and `pdr mesh` checks
-  // that every final edge is longer.
+  // theorem_h in seq_refinement.cpp), when the hypotheses hold (B >= 2,
+  // RefineOptions::exact_theory and T_o conforms), else 0: the audit holds every new edge
+  // to it, and `pdr mesh` checks that every final edge is longer.
   double h_theorem = 0;
   std::size_t audit_failures = 0;  // inadmissible domains only (else the first throws)
   std::string audit_note;          // the first of them

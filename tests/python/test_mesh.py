@@ -164,6 +164,15 @@ def test_bound_not_met_is_exit_3(tmp_path, pdr_cli):
     assert isinstance(m["leftovers"], list)
 
 
+def test_bound_below_two_at_the_cap_is_exit_3(tmp_path, pdr_cli):
+    # B = 1 is outside Theorem 1 (it refines tets of ratio >= 2): the run stops at the cap,
+    # and the check holds no edge to the theorem's h, so only quality.ratio fails.
+    cli = run_cli(pdr_cli, "mesh", DATA_DIR / "box.poly", "-o", tmp_path / "box", "--ratio",
+                  "1", "--max-vertices", "2000", "--audit", "--json")
+    assert cli.returncode == 3, cli.stderr
+    assert json.loads(cli.stdout)["check_failed"] == ["quality.ratio"]
+
+
 def test_surface_cap_returns_no_mesh():
     # The cap reached while meshing the surface: exit 3 of pdr mesh, nothing meshed.
     m = pdr.mesh(DATA_DIR / "cube-in-cube.poly", max_vertices=20)

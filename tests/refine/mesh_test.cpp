@@ -29,7 +29,8 @@ struct MeshRun {
   bool admissible = true;
 };
 
-MeshRun mesh(const std::string& name, std::optional<double> max_volume) {
+MeshRun mesh(const std::string& name, std::optional<double> max_volume, double ratio = 2.0,
+             std::size_t max_vertices = 0) {
   const Plc plc = io::read_domain(std::string(PDR_DATA_DIR) + "/" + name);
   DomainAnalysis an = analyze(plc);
   MeshRun r;
@@ -38,11 +39,13 @@ MeshRun mesh(const std::string& name, std::optional<double> max_volume) {
   RefineOptions o;
   o.audit = true;
   o.max_volume = max_volume;
+  o.ratio = ratio;
+  o.max_vertices = max_vertices;
   set_domain(o, an);
   r.rr = refine(r.vm, o);
   const MeshData m = to_mesh_data(r.vm.dt, r.vm.inside);
   check::Options co;
-  co.ratio_bound = 2.0;
+  co.ratio_bound = ratio;
   if (r.rr.stats.h_theorem > 0) co.min_edge = r.rr.stats.h_theorem;  // Theorem 1 (1), a priori
   r.report = check::check_mesh(check::view_of(m), an.domain.plc, co);
   return r;
@@ -88,6 +91,24 @@ TEST(RefineMesh, AdmissibleDomainsPassEveryCheck) {
       const auto audit = audit_volume(r.vm);
       EXPECT_TRUE(audit.empty()) << audit.front();
     }
+}
+
+// Theorem 1 refines tets of ratio >= 2: its proof needs a refined tet's shortest edge
+// below half its circumradius, so its a-priori h holds for B >= 2 only. With B = 1 (a
+// valid option: the run ends at the vertex cap) no h is claimed, the audit holds new
+// edges to the run's own h and does not throw, and the check fails only quality.ratio.
+TEST(RefineMesh, ABoundBelowTwoClaimsNoTheoremH) {
+  MeshRun r = mesh("box.poly", std::nullopt, 1.0, 3000);
+  EXPECT_TRUE(r.admissible);
+  EXPECT_EQ(r.rr.stats.h_theorem, 0);
+  EXPECT_FALSE(r.rr.stop_reason.empty());  // the cap
+  EXPECT_FALSE(r.rr.leftovers.empty());
+  for (const auto& c : r.report.checks)
+    EXPECT_TRUE(c.status != check::Status::Fail || c.id == "quality.ratio") << c.id;
+  // A bound above 2 keeps the theorem's h (a refined tet's ratio is then >= 2 too).
+  MeshRun above = mesh("box.poly", std::nullopt, 3.0);
+  EXPECT_GT(above.rr.stats.h_theorem, 0);
+  EXPECT_TRUE(above.report.ok()) << check::to_text(above.report);
 }
 
 TEST(RefineMesh, InadmissibleDomainsWithinTheGuardsPassEveryCheck) {
