@@ -67,24 +67,16 @@ bool exactly_collinear(const Point& a, const Point& b, const Point& p) {
   return true;
 }
 
-SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const DomainMap& m, const MeshView& mesh,
-                       const PointGrid& grid, double tol) {
-  SegmentMap s;
-  s.a = a;
-  s.b = b;
-  if (!m.mesh_vertex[a] || !m.mesh_vertex[b]) {
-    s.status = ItemStatus::MissingVertex;
-    return s;
-  }
-  const std::uint32_t ma = *m.mesh_vertex[a], mb = *m.mesh_vertex[b];
+// The mesh vertices on the straight piece from mesh vertex ma to mb (both included), in
+// order; false when the piece is degenerate. tolerance_vertices counts those not exactly
+// on it.
+bool map_piece(std::uint32_t ma, std::uint32_t mb, const MeshView& mesh, const PointGrid& grid,
+               double tol, std::vector<std::uint32_t>& out, std::uint64_t& tolerance_vertices) {
   const Point& A = mesh.points[ma];
   const Point& B = mesh.points[mb];
   const Vec ab = sub(B, A);
   const double len = norm(ab);
-  if (A == B) {
-    s.status = ItemStatus::Degenerate;
-    return s;
-  }
+  if (A == B) return false;
   // Relative to |AB|, plus the rounding of a vertex computed at this magnitude (a unit
   // segment far from the origin: its midpoint rounds farther off the line than tol |AB|).
   const double dist = tol > 0 ? tol * len + 4 * kEps * std::max(max_abs(A), max_abs(B)) : 0;
@@ -108,6 +100,7 @@ SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const DomainMap& m, con
   }
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  std::vector<std::uint32_t> on;
   for (std::uint32_t id : cand) {
     const Point& p = mesh.points[id];
     bool tolerance = false;
@@ -117,15 +110,87 @@ SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const DomainMap& m, con
     }
     if (signs::dot(p, A, B, A) == Sign::Negative || signs::dot(p, B, A, B) == Sign::Negative)
       continue;
-    s.vertices.push_back(id);
-    if (tolerance) ++s.tolerance_vertices;
+    on.push_back(id);
+    if (tolerance) ++tolerance_vertices;
   }
   // Order from A to B: p before q iff (q - p) . (B - A) > 0; ties by id (duplicates).
-  std::sort(s.vertices.begin(), s.vertices.end(), [&](std::uint32_t p, std::uint32_t q) {
+  std::sort(on.begin(), on.end(), [&](std::uint32_t p, std::uint32_t q) {
     const Sign o = signs::dot(mesh.points[q], mesh.points[p], B, A);
     return o == Sign::Positive || (o == Sign::Zero && p < q);
   });
+  // Joined to the previous piece at its last vertex (this piece's first).
+  if (!out.empty() && !on.empty() && on.front() == out.back()) on.erase(on.begin());
+  out.insert(out.end(), on.begin(), on.end());
+  return true;
+}
+
+// Segment ab of the input through the input vertices `pivots` (in order from a to b) that
+// lie on it within the coordinates' rounding (tolerance_pivots): the mesh vertices on each
+// straight piece between them.
+SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const std::vector<std::uint32_t>& pivots,
+                       const DomainMap& m, const MeshView& mesh, const PointGrid& grid, double tol) {
+  SegmentMap s;
+  s.a = a;
+  s.b = b;
+  std::vector<std::uint32_t> ends{a};
+  ends.insert(ends.end(), pivots.begin(), pivots.end());
+  ends.push_back(b);
+  for (std::uint32_t v : ends)
+    if (!m.mesh_vertex[v]) {
+      s.status = ItemStatus::MissingVertex;
+      return s;
+    }
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i)
+    if (!map_piece(*m.mesh_vertex[ends[i]], *m.mesh_vertex[ends[i + 1]], mesh, grid, tol,
+                   s.vertices, s.tolerance_vertices)) {
+      s.status = ItemStatus::Degenerate;
+      s.vertices.clear();
+      return s;
+    }
+  s.tolerance_vertices += ends.size() - 2;
   return s;
+}
+
+// Options::coordinate_uncertainty u > 0: the input vertices that lie on polygon edge (u, v)
+// within the rounding, ordered from u to v. A vertex exactly on a segment is read back
+// off it by up to 2u (each of the three points moved by at most u), so one within 2u of
+// the edge's line, its foot farther than 2u from both ends, and in no polygon that has
+// the edge (a polygon narrower than the rounding does not touch itself) lies on it, as
+// pdr mesh classifies a T-junction of rounded input (the mesh then holds the pieces).
+// `near` gives the input vertices within a box; `with_edge` whether a polygon with the
+// edge has the vertex.
+template <class Near, class WithEdge>
+std::vector<std::uint32_t> tolerance_pivots(std::uint32_t u, std::uint32_t v,
+                                            const std::vector<Point>& input, double uncertainty,
+                                            Near&& near, WithEdge&& with_edge) {
+  std::vector<std::uint32_t> out;
+  if (!(uncertainty > 0)) return out;
+  const double reach = 2 * uncertainty;
+  const Point& a = input[u];
+  const Point& b = input[v];
+  const Vec ab = sub(b, a);
+  const double len = norm(ab);
+  if (!(len > 2 * reach)) return out;
+  Box box{a, a};
+  for (int c = 0; c < 3; ++c) {
+    box.lo[c] = std::min(a[c], b[c]) - reach;
+    box.hi[c] = std::max(a[c], b[c]) + reach;
+  }
+  near(box, [&](std::uint32_t w) {
+    if (w == u || w == v || exactly_collinear(a, b, input[w])) return;
+    const Vec aw = sub(input[w], a);
+    const double t = (ab[0] * aw[0] + ab[1] * aw[1] + ab[2] * aw[2]) / (len * len);
+    if (!(t * len > reach && (1 - t) * len > reach)) return;
+    if (!(norm(cross(ab, aw)) <= reach * len) || with_edge(w)) return;
+    out.push_back(w);
+  });
+  int k = 0;
+  for (int j = 1; j < 3; ++j)
+    if (std::fabs(ab[j]) > std::fabs(ab[k])) k = j;
+  std::sort(out.begin(), out.end(), [&](std::uint32_t x, std::uint32_t y) {
+    return ab[k] > 0 ? input[x][k] < input[y][k] : input[x][k] > input[y][k];
+  });
+  return out;
 }
 
 using SegmentIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t>;
@@ -448,6 +513,29 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
     if (it != order.end() && !lex_less(p, mesh.points[*it])) m.mesh_vertex[i] = *it;
   }
   const double tol = options.relative_tolerance;
+  // Rounded input: the input vertices used by the polygons, by mesh vertex, and which
+  // polygons have which edges and vertices (tolerance_pivots).
+  const double u_coord = options.coordinate_uncertainty;
+  std::vector<std::int64_t> input_of(u_coord > 0 ? mesh.points.size() : 0, -1);
+  using Edge = std::pair<std::uint32_t, std::uint32_t>;
+  std::vector<std::pair<Edge, std::uint32_t>> edge_polys;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> poly_vertices;
+  if (u_coord > 0) {
+    std::uint32_t id = 0;
+    for (const PlcFacet& f : domain.facets)
+      for (const auto& poly : f.polygons) {
+        for (std::size_t i = 0; i < poly.size(); ++i) {
+          const std::uint32_t x = poly[i], y = poly[(i + 1) % poly.size()];
+          if (x >= domain.points.size() || y >= domain.points.size()) continue;
+          if (m.mesh_vertex[x]) input_of[*m.mesh_vertex[x]] = x;
+          poly_vertices.push_back({id, x});
+          if (poly.size() >= 3) edge_polys.push_back({{std::min(x, y), std::max(x, y)}, id});
+        }
+        ++id;
+      }
+    std::sort(edge_polys.begin(), edge_polys.end());
+    std::sort(poly_vertices.begin(), poly_vertices.end());
+  }
   SegmentIndex seg_index;
   for (const PlcFacet& f : domain.facets)
     for (const auto& poly : f.polygons) {
@@ -458,7 +546,23 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
         if (u == v || u >= domain.points.size() || v >= domain.points.size()) continue;
         if (!seg_index.emplace(std::pair{std::min(u, v), std::max(u, v)}, m.segments.size()).second)
           continue;
-        m.segments.push_back(map_segment(u, v, m, mesh, grid, tol));
+        const Edge e{std::min(u, v), std::max(u, v)};
+        auto near = [&](const Box& box, auto&& visit) {
+          grid.query(box, [&](std::uint32_t id, const Point&) {
+            if (input_of[id] >= 0) visit(static_cast<std::uint32_t>(input_of[id]));
+          });
+        };
+        auto with_edge = [&](std::uint32_t w) {
+          auto it = std::lower_bound(edge_polys.begin(), edge_polys.end(), std::pair{e, 0u});
+          for (; it != edge_polys.end() && it->first == e; ++it)
+            if (std::binary_search(poly_vertices.begin(), poly_vertices.end(),
+                                   std::pair{it->second, w}))
+              return true;
+          return false;
+        };
+        const std::vector<std::uint32_t> pivots =
+            tolerance_pivots(u, v, domain.points, u_coord, near, with_edge);
+        m.segments.push_back(map_segment(u, v, pivots, m, mesh, grid, tol));
       }
     }
   std::vector<std::uint8_t> dropped_vertex(domain.points.size(), 0);

@@ -190,7 +190,7 @@ void check_closed(PlcDomain& dom) {
          "closed boundary: " + seg + " bounds only one facet side (this facet); every "
          "segment must be shared by two or more facet sides (two for a manifold "
          "surface). Add the missing facet; if a vertex of a neighbouring facet should "
-         "split this edge, it must lie exactly on it");
+         "split this edge, it must lie on it (within the coordinates' rounding)");
   }
   // A surface with walls (an edge of three or more faces: an assembly's shared face, a wall
   // splitting a body, bodies touching along an edge) is no 2-manifold, and parity misreads
@@ -227,7 +227,7 @@ PlcDomain build_domain(const Plc& plc, const PlcOptions& options) {
   dom.facets.resize(plc.facets.size());
   detail::check_points(plc);
   std::vector<detail::FacetPolys> polys = detail::check_polygons(plc);
-  detail::split_edges(plc, polys);
+  detail::split_edges(plc, dom.tolerance.uncertainty(), polys);
   detail::fit_planes(polys, dom);
   detail::triangulate_faces(polys, dom);
   detail::build_structure(polys, dom);

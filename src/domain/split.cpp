@@ -7,7 +7,18 @@
 // collinear edges that overlap thus share the pieces they have in common, and a vertex of
 // one facet inside another facet's edge (allowed by TetGen) splits that edge. A polygon
 // whose edge passes through one of its own vertices touches itself: an input error.
+//
+// Rounded input (a coordinate uncertainty u > 0, io/precision.hpp) classifies too: a
+// vertex within 2u of an edge's line (each of the three points moved by at most u, so a
+// vertex exactly on the edge is read at most 2u off it), farther than 2u from both ends,
+// lies on the edge, as the input means: a part turned and printed with 7 digits has its
+// T-junctions a hair inside or outside the edges they split, and read exactly the wall's
+// polygon would cross the split line or leave the edge bounding one facet side. The test
+// is in floating point, a classification of imprecise input; it never applies to a vertex
+// of a polygon that has the edge (a polygon narrower than the rounding is not read as
+// touching itself), and the pieces a-v, v-b then bend by at most 2u at v.
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "domain/bvh.hpp"
@@ -24,16 +35,25 @@ Edge undirected(std::uint32_t a, std::uint32_t b) { return {std::min(a, b), std:
 
 }  // namespace
 
-void split_edges(const Plc& plc, std::vector<FacetPolys>& polys) {
+void split_edges(const Plc& plc, double uncertainty, std::vector<FacetPolys>& polys) {
   const std::vector<Point>& pts = plc.points;
   std::vector<std::uint32_t> used;
   std::vector<Edge> edges;
+  // (edge, loop) and (loop, vertex) over every loop, numbered across the facets: a vertex of
+  // a loop with the edge is split off it only exactly.
+  std::vector<std::pair<Edge, std::uint32_t>> edge_loops;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> loop_vertices;
+  std::uint32_t loop_id = 0;
   for (const FacetPolys& fp : polys) {
-    for (const auto& loop : fp.loops)
+    for (const auto& loop : fp.loops) {
       for (std::size_t i = 0; i < loop.size(); ++i) {
         used.push_back(loop[i]);
         edges.push_back(undirected(loop[i], loop[(i + 1) % loop.size()]));
+        edge_loops.push_back({edges.back(), loop_id});
+        loop_vertices.push_back({loop_id, loop[i]});
       }
+      ++loop_id;
+    }
     for (const auto& s : fp.segs) {
       used.insert(used.end(), s.begin(), s.end());
       edges.push_back(undirected(s[0], s[1]));
@@ -44,6 +64,29 @@ void split_edges(const Plc& plc, std::vector<FacetPolys>& polys) {
   used.erase(std::unique(used.begin(), used.end()), used.end());
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::sort(edge_loops.begin(), edge_loops.end());
+  std::sort(loop_vertices.begin(), loop_vertices.end());
+  auto in_loop_with = [&](const Edge& e, std::uint32_t v) {
+    auto it = std::lower_bound(edge_loops.begin(), edge_loops.end(), std::make_pair(e, 0u));
+    for (; it != edge_loops.end() && it->first == e; ++it)
+      if (std::binary_search(loop_vertices.begin(), loop_vertices.end(),
+                             std::make_pair(it->second, v)))
+        return true;
+    return false;
+  };
+  const double reach = 2 * uncertainty;
+  // v within `reach` of the line of ab, its foot farther than `reach` from a and b.
+  auto within_rounding = [&](const Point& a, const Point& b, const Point& v) {
+    const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double av[3] = {v[0] - a[0], v[1] - a[1], v[2] - a[2]};
+    const double len = std::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+    if (!(len > 2 * reach)) return false;
+    const double t = (ab[0] * av[0] + ab[1] * av[1] + ab[2] * av[2]) / (len * len);
+    if (!(t * len > reach && (1 - t) * len > reach)) return false;
+    const double c[3] = {ab[1] * av[2] - ab[2] * av[1], ab[2] * av[0] - ab[0] * av[2],
+                         ab[0] * av[1] - ab[1] * av[0]};
+    return std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) <= reach * len;
+  };
 
   std::vector<Box> boxes(used.size());
   for (std::size_t i = 0; i < used.size(); ++i) boxes[i].add(pts[used[i]]);
@@ -56,15 +99,24 @@ void split_edges(const Plc& plc, std::vector<FacetPolys>& polys) {
     Box q;
     q.add(a);
     q.add(b);
+    for (int k = 0; k < 3; ++k) {
+      q.lo[k] -= reach;
+      q.hi[k] += reach;
+    }
     std::vector<std::uint32_t> found;
     bvh.for_overlapping(q, [&](std::uint32_t item) {
       const std::uint32_t v = used[item];
       if (v == e[0] || v == e[1]) return;
-      if (collinear(a, b, pts[v]) && strictly_between(a, b, pts[v])) found.push_back(v);
+      if (collinear(a, b, pts[v]) ? strictly_between(a, b, pts[v])
+                                  : reach > 0 && within_rounding(a, b, pts[v]) &&
+                                        !in_loop_with(e, v))
+        found.push_back(v);
     });
     if (found.empty()) continue;
+    // Ordered along the edge's dominant coordinate (exact for collinear vertices).
     int k = 0;
-    while (a[k] == b[k]) ++k;
+    for (int j = 1; j < 3; ++j)
+      if (std::abs(b[j] - a[j]) > std::abs(b[k] - a[k])) k = j;
     const bool up = a[k] < b[k];
     std::sort(found.begin(), found.end(), [&](std::uint32_t x, std::uint32_t y) {
       return up ? pts[x][k] < pts[y][k] : pts[x][k] > pts[y][k];

@@ -28,8 +28,9 @@ std::string facet_name(const Plc& plc, std::size_t f);
 // Step 1 and 2 (domain/build.cpp).
 void check_points(const Plc& plc);
 std::vector<FacetPolys> check_polygons(const Plc& plc);
-// Step 3 (domain/split.cpp).
-void split_edges(const Plc& plc, std::vector<FacetPolys>& polys);
+// Step 3 (domain/split.cpp); uncertainty: the coordinates' (io/precision.hpp), 0 for exact
+// classification.
+void split_edges(const Plc& plc, double uncertainty, std::vector<FacetPolys>& polys);
 // "1.5e-10": a figure in a diagnostic (domain/coplanar.cpp).
 std::string number(double x);
 // A face's vertices (its loops, 2-vertex polygons and points), sorted, each once.

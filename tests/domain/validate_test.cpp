@@ -13,9 +13,11 @@
 
 #include "domain/cells.hpp"
 #include "domain/distance.hpp"
+#include "domain/exact.hpp"
 #include "domain/validate.hpp"
 #include "geom/predicates.hpp"
 #include "io/mesh_io.hpp"
+#include "support/outside_fixtures.hpp"
 #include "support/plc_fixtures.hpp"
 
 namespace pdr::domain::test {
@@ -307,6 +309,42 @@ TEST(PlcValidate, AcceptsVertexInsideAnotherFacetsEdge) {
   EXPECT_EQ(dom.vertex_count(), 10u);
   EXPECT_EQ(dom.segments.size(), 15u);  // 12 edges, two of them split, plus the split line
   for (const DomainSegment& s : dom.segments) EXPECT_EQ(s.sides.size(), 2u);
+}
+
+// The same box turned and printed with 7 or 9 digits, as another tool would write it: the
+// new vertices then lie within the coordinates' rounding of the walls' top edges, a hair
+// inside or outside them, and the edges are split there as the input means (exactly, the
+// wall's polygon would cross the split line, or leave the vertex off every edge).
+TEST(PlcValidate, AcceptsVertexWithinRoundingOfAnotherFacetsEdge) {
+  Plc p = box({0, 0, 0}, {2, 1, 1});
+  p.points.push_back({1, 0, 1});
+  p.points.push_back({1, 1, 1});
+  p.facets[1].polygons = {{4, 8, 9, 7}};
+  PlcFacet right;
+  right.polygons = {{8, 5, 6, 9}};
+  p.facets.push_back(right);
+  relabel(p);
+  std::mt19937_64 rng(20261129);
+  std::uniform_real_distribution<double> angle(0, 6.283185307179586);
+  int off_edge = 0;
+  for (int n = 0; n < 40; ++n) {
+    const int digits = n % 2 == 0 ? 7 : 9;
+    const Plc q = printed(rotated(p, angle(rng), angle(rng), angle(rng)), digits);
+    for (std::uint32_t v : {8u, 9u}) {
+      const Point& a = q.points[v == 8 ? 4 : 7];
+      const Point& b = q.points[v == 8 ? 5 : 6];
+      off_edge += !collinear(a, b, q.points[v]);
+    }
+    std::string error;
+    try {
+      const PlcDomain dom = build_domain(q);
+      EXPECT_EQ(dom.segments.size(), 15u) << "case " << n;
+      for (const DomainSegment& s : dom.segments) EXPECT_EQ(s.sides.size(), 2u) << "case " << n;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "case " << n << " (" << digits << " digits): " << e.what();
+    }
+  }
+  EXPECT_GT(off_edge, 40);  // rounding moved most of the vertices off their edges
 }
 
 TEST(PlcValidate, AcceptsCollinearOverlappingEdges) {
