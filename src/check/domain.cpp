@@ -424,9 +424,14 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
   // with both its tets on the same side. Where the facet bounds the mesh (a face in it
   // belongs to one tet alone), its subfacets are such faces, and a face in it between two
   // tets is in it only when the two tets lie on opposite sides: each one's fourth corner
-  // off the slab, on opposite sides of the facet's plane. (Between two regions every face
-  // in the slab stays a candidate: there a thin tet's lower face is the subfacet, and its
-  // fourth corner lies in the slab.)
+  // off the slab, on opposite sides of the facet's plane. Between two regions every face
+  // in the slab is held by two tets, and a flat tet (its fourth corner in the slab and
+  // not outside the facet's region) stacks two layers of them; each covers the facet, so
+  // one is kept: a face of a flat tet is in the facet only where the tet's outward normal
+  // points down the chart's dropped axis (the projected face, in the tet's outward order,
+  // turns clockwise: exact). In a stack of flat tets only the faces under the lowest one
+  // remain. (A thin tet whose fourth corner lies in the slab outside the region, on a
+  // neighbour a hair from coplanar, is no flat tet: its face on the facet is a subfacet.)
   struct Candidate {
     std::uint32_t face, facet;
     double distance;
@@ -470,6 +475,18 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
     const double d = signed_distance(f, v);
     return d > 0 ? 1 : d < 0 ? -1 : 0;
   };
+  // Tet r.tet lies flat on f: its corner opposite face r.local in f's slab and region.
+  const auto flat_on = [&](const FacetMap& f, const FaceRef& r) {
+    const std::uint32_t v = mesh.tets[r.tet][r.local];
+    return std::binary_search(f.on_plane.begin(), f.on_plane.end(), v) &&
+           f.region->locate(Q2::at(project(mesh.points[v], f.drop))) != Where::Outside;
+  };
+  // The face r.local of tet r.tet, in the tet's outward order, projected by f's chart.
+  const auto outward_turn = [&](const FacetMap& f, const FaceRef& r) {
+    const Tet& t = mesh.tets[r.tet];
+    const auto& k = kFaceVertices[r.local];
+    return signs::orient2d(mesh.points[t[k[0]]], mesh.points[t[k[1]]], mesh.points[t[k[2]]], f.drop);
+  };
   for (std::size_t i = 0; i < candidates.size();) {
     const std::uint32_t fid = candidates[i].face;
     std::optional<std::uint32_t> in;
@@ -481,6 +498,11 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
       if (f.tolerance_vertices > 0 && bounds_mesh[c.facet] && holders.size() == 2) {
         const int a = side(f, holders[0]), b = side(f, holders[1]);
         if (a == 0 || b == 0 || a == b) continue;
+      } else if (f.tolerance_vertices > 0 && holders.size() == 2 &&
+                 std::any_of(holders.begin(), holders.end(), [&](const FaceRef& r) {
+                   return flat_on(f, r) && outward_turn(f, r) != Sign::Negative;
+                 })) {
+        continue;
       }
       if (!in || c.distance < nearest) in = c.facet, nearest = c.distance;
     }

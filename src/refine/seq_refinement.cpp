@@ -286,10 +286,11 @@ class Refiner {
     return queued;
   }
 
-  // The budget ended with elements of D missing from T: each is listed. So are flat tets
-  // on a facet still inside (refine/flat.hpp rule 1: their repair waited in the queue
-  // when the cap stopped the run, or was refused): two of their faces lie on the facet
-  // without being subfacets.
+  // The budget ended with elements of D missing from T: each is listed. Flat tets on a
+  // facet still inside (refine/flat.hpp rule 1: their repair waited in the queue when the
+  // cap stopped the run, or was refused) are counted: they leave T conforming (their faces
+  // that are subfacets are faces of T and the inside flags follow them; their other faces
+  // lie in the facet's slab without being in the facet), slivers of the facet's rounding.
   void abandon_missing() {
     for (const auto& n : conformity_.abandon(m_)) {
       ++res_.stats.conformity_refused;
@@ -302,11 +303,6 @@ class Refiner {
     for (TetId t = 0; t < s.slots(); ++t)
       if (s.is_alive(t) && !s.is_ghost(t) && m_.is_inside(t) && flat_subfacet_face(m_, t))
         ++res_.stats.flat_left;
-    if (res_.stats.flat_left > 0)
-      unsplit("refine.flat: " + std::to_string(res_.stats.flat_left) +
-              " flat tets on facets are left inside (" +
-              (res_.stop_reason.empty() ? std::string("their repair was refused")
-                                        : res_.stop_reason) + ")");
   }
 
   // Commits cavity c (p becomes D's vertex sv, kNone: off ∂Ω) and records the elements of

@@ -164,7 +164,8 @@ struct RefineStats {
   std::size_t conformity_splits = 0;    // refinements of elements missing from T
   std::size_t conformity_refused = 0;   // ... that a guard refused: T does not conform
   std::size_t flat_left = 0;            // flat tets on a facet (refine/flat.hpp rule 1) left
-                                        // inside when the vertex cap stopped the run
+                                        // inside: the cap stopped their repair, or it was
+                                        // refused (slivers; T still conforms)
   std::size_t flat_repairs = 0;         // refinements asked by refine/flat.hpp rule 1 (a flat
                                         // tet on a facet), inserted or refused
   std::size_t face_repairs = 0;         // ... by rule 2 (a subfacet face with its tet's apex

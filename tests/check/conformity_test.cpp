@@ -228,6 +228,43 @@ TEST(Conformity, FacesOfAFlatTetOnAToleranceFacetAreNotSubfacets) {
   EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
 }
 
+// The same flat tet on the base of two pyramids glued base to base (apexes E above and F
+// below; no hole point, so both are regions and the base lies between them, as TetGen
+// reads a .poly). Every face on the base is now held by two tets: ABC and ACD between the
+// flat tet or the upper tet and the lower pyramid's, ABQ, BCQ and CAQ between the flat tet
+// and the upper ones. Either layer covers the base once; the faces on the flat tet's
+// lower side count (its outward normal there points down the chart's axis), its upper
+// ones not (they were counted too: the base covered about twice).
+TEST(Conformity, AFlatTetOnAToleranceFacetBetweenTwoRegionsCoversItOnce) {
+  Plc d;
+  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1}, {0.5, 0.5, -1}};
+  for (const std::vector<std::uint32_t>& f : std::vector<std::vector<std::uint32_t>>{
+           {0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4},
+           {0, 1, 5}, {1, 2, 5}, {2, 3, 5}, {3, 0, 5}}) {
+    PlcFacet g;
+    g.polygons.push_back(f);
+    d.facets.push_back(g);
+  }
+  MeshData m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1}, {0.6, 0.3, 1e-11},
+              {0.5, 0.5, -1}};
+  const auto orient = [&](Tet t) {
+    const auto& p = m.points;
+    if (exact::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) == Sign::Negative)
+      std::swap(t[0], t[1]);
+    return t;
+  };
+  for (const Tet& t : std::vector<Tet>{{0, 1, 2, 5}, {0, 1, 5, 4}, {1, 2, 5, 4}, {2, 0, 5, 4},
+                                       {0, 2, 3, 4}, {0, 1, 2, 6}, {0, 2, 3, 6}})
+    m.tets.push_back(orient(t));
+  const Report r = run(m, d);
+  for (const char* id : {"validity.orientation", "validity.overlap", "conformity.vertices",
+                         "conformity.segments", "conformity.facets", "conformity.volume"})
+    EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
+  EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 2u + 8u);
+  EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
+}
+
 TEST(FacetRegion, NestedPolygonWithHoleIsARing) {
   const std::vector<P2> outer = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
   const std::vector<P2> inner = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
