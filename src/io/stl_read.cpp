@@ -127,7 +127,7 @@ Surface read_stl(const std::string& path) {
   const std::string bytes = read_file_bytes(path);
   std::size_t i = 0;
   while (i < bytes.size() && is_blank(bytes[i])) ++i;
-  const bool says_solid = bytes.compare(i, 5, "solid") == 0;
+  const bool says_solid = is_keyword(std::string_view(bytes).substr(i, 5), "solid");
   if (bytes.size() >= 84) {
     const auto n = ByteReader(bytes, 80, path).get_in<std::uint32_t>(std::endian::little,
                                                                      "the triangle count");

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -169,6 +170,10 @@ TEST(SurfaceFormats, StlAscii) {
   expect_box(read_as(dir, "c.stl", two));
   // Quads as 4-vertex loops.
   expect_box(read_as(dir, "q.stl", stl_ascii(box_squares())));
+  // Upper case from the first keyword on (read as binary, and refused, before).
+  std::string upper = stl_ascii(box_triangles());
+  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  expect_box(read_as(dir, "u.stl", upper));
 
   std::string bad = stl_ascii(box_triangles());
   bad.replace(bad.find("endloop"), 7, "endlop");
