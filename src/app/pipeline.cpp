@@ -13,8 +13,9 @@
 namespace pdr::app {
 namespace {
 
-// Drops the duplicate points (never inserted, so in no tet) and renumbers the rest: the
-// output lists each vertex once, as a mesh must (validity.duplicate_vertices).
+// Drops the duplicate points (never inserted, so in no tet; input ids, so `mesh` must be
+// in the input's order) and renumbers the rest: the output lists each vertex once, as a
+// mesh must (validity.duplicate_vertices).
 void drop_duplicates(MeshData& mesh, const std::vector<Duplicate>& duplicates) {
   if (duplicates.empty()) return;
   std::vector<std::uint8_t> drop(mesh.points.size(), 0);
@@ -51,7 +52,10 @@ int triangulate_write_check(std::vector<Point> points, const std::string& source
   if (bulk.status != BulkStatus::Ok)
     throw InputError(source, 0, bulk.message + "; give points that span a volume");
   const double t_build = timer.lap("delaunay");
+  // The vertices in the input's order (the insertion stored them in its own), so that the
+  // duplicates' input ids name them, and vertex i of the output is point i of the input.
   MeshData mesh = to_mesh_data(dt);
+  restore_input_order(mesh, bulk.input_index);
   drop_duplicates(mesh, bulk.duplicates);
   summary.set("points", n);
   summary.set("vertices", mesh.points.size());

@@ -3,6 +3,9 @@
 // asserts the exit code (README "Exit codes"), the files left behind and the messages.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <random>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -84,6 +87,58 @@ TEST_F(Cli, DuplicatesAreReportedNotInserted) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["duplicates"], 1);
   EXPECT_EQ(j["check"], "pass");
+}
+
+// The output lists the input's points in the input's order (vertex i of out.node is point
+// i of the input), without the copies that were not inserted. Many copies over a large
+// set (inserted in another order than given: a spatial sort) made the dropped copies'
+// ids point at the wrong vertices: exit 4, "tet 104 has vertex 60 but there are 60 points".
+TEST_F(Cli, OutputKeepsTheInputOrderAndDropsOnlyCopies) {
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> cell(0, 5);
+  std::vector<std::array<int, 3>> pts;
+  for (int i = 0; i < 3000; ++i) pts.push_back({cell(rng), cell(rng), cell(rng)});
+  std::ostringstream s;
+  s << pts.size() << " 3 0 0\n";
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    s << i + 1 << ' ' << pts[i][0] << ' ' << pts[i][1] << ' ' << pts[i][2] << '\n';
+  write("dups.node", s.str());
+  write_points("pts.node", 2000);
+  for (const char* name : {"dups", "pts"}) {
+    SCOPED_TRACE(name);
+    const Outcome r = run("delaunay " + path(std::string(name) + ".node") + " -o " +
+                          path(std::string("out-") + name) + " --json");
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["check"], "pass");
+    // Each output vertex is the next input point with its coordinates.
+    const auto read_node = [&](const std::string& file) {
+      std::ifstream in(path(file));
+      std::size_t n = 0, dim = 0, attrs = 0, markers = 0;
+      in >> n >> dim >> attrs >> markers;
+      std::vector<std::array<double, 3>> out(n);
+      for (auto& p : out) {
+        long id = 0;
+        in >> id >> p[0] >> p[1] >> p[2];
+      }
+      return out;
+    };
+    const auto input = read_node(std::string(name) + ".node");
+    const auto output = read_node(std::string("out-") + name + ".node");
+    EXPECT_EQ(output.size() + j["duplicates"].get<std::size_t>(), input.size());
+    std::size_t next = 0;
+    for (const auto& p : output) {
+      while (next < input.size() && input[next] != p) ++next;
+      ASSERT_LT(next, input.size()) << "an output vertex out of the input's order";
+      ++next;
+    }
+    if (j["duplicates"] == 0) {
+      EXPECT_EQ(output, input);
+    }
+  }
+  EXPECT_EQ(nlohmann::json::parse(run("delaunay " + path("dups.node") + " -o " + path("again") +
+                                      " --json").out)["vertices"],
+            216);
 }
 
 TEST_F(Cli, MalformedMeshForCheckExits2) {
