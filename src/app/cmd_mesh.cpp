@@ -308,8 +308,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                                   "tetrahedralization were refused (see unsplit)");
     if (code == kExitOk) code = kExitNotGuaranteed;
   }
-  // Slivers of a facet's rounding, not a break of conformity (refine/flat.hpp): said, as
-  // TetGen's sliver count would be; the check lists any with ratio >= B.
+  // Slivers of a facet's rounding, not a break of conformity (refine/flat.hpp): said, since
+  // their radius-edge ratio is often small (a near-cocircular quad) and the check then
+  // lists none of them.
   if (rr.stats.flat_left > 0)
     summary.set("flat_tets", std::to_string(rr.stats.flat_left) +
                                  " flat tets (slivers within a facet's planarity tolerance) "

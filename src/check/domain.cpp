@@ -151,46 +151,22 @@ SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const std::vector<std::
   return s;
 }
 
-// Options::coordinate_uncertainty u > 0: the input vertices that lie on polygon edge (u, v)
-// within the rounding, ordered from u to v. A vertex exactly on a segment is read back
-// off it by up to 2u (each of the three points moved by at most u), so one within 2u of
-// the edge's line, its foot farther than 2u from both ends, and in no polygon that has
-// the edge (a polygon narrower than the rounding does not touch itself) lies on it, as
-// pdr mesh classifies a T-junction of rounded input (the mesh then holds the pieces).
-// `near` gives the input vertices within a box; `with_edge` whether a polygon with the
-// edge has the vertex.
-template <class Near, class WithEdge>
-std::vector<std::uint32_t> tolerance_pivots(std::uint32_t u, std::uint32_t v,
-                                            const std::vector<Point>& input, double uncertainty,
-                                            Near&& near, WithEdge&& with_edge) {
-  std::vector<std::uint32_t> out;
-  if (!(uncertainty > 0)) return out;
-  const double reach = 2 * uncertainty;
-  const Point& a = input[u];
-  const Point& b = input[v];
-  const Vec ab = sub(b, a);
+// Options::coordinate_uncertainty u > 0 (rounded input): input vertex v lies on the edge
+// from input vertex a to b (a < b) within the rounding. A vertex exactly on a segment is
+// read back off it by up to 2u (each of the three points moved by at most u), so one within
+// 2u of the edge's line with its foot farther than 2u from both ends does, unless a polygon
+// with the edge has it (a polygon narrower than the rounding does not touch itself) or it
+// is within the rounding of another edge too (near a corner: the coordinates do not say
+// which it is on); map_domain applies those two. pdr mesh classifies T-junctions of rounded
+// input alike (the mesh then holds the pieces); the same floating-point expression, from
+// the lower-numbered end, so that both agree at the threshold.
+bool within_rounding(const Point& a, const Point& b, const Point& v, double reach) {
+  const Vec ab = sub(b, a), av = sub(v, a);
   const double len = norm(ab);
-  if (!(len > 2 * reach)) return out;
-  Box box{a, a};
-  for (int c = 0; c < 3; ++c) {
-    box.lo[c] = std::min(a[c], b[c]) - reach;
-    box.hi[c] = std::max(a[c], b[c]) + reach;
-  }
-  near(box, [&](std::uint32_t w) {
-    if (w == u || w == v || exactly_collinear(a, b, input[w])) return;
-    const Vec aw = sub(input[w], a);
-    const double t = (ab[0] * aw[0] + ab[1] * aw[1] + ab[2] * aw[2]) / (len * len);
-    if (!(t * len > reach && (1 - t) * len > reach)) return;
-    if (!(norm(cross(ab, aw)) <= reach * len) || with_edge(w)) return;
-    out.push_back(w);
-  });
-  int k = 0;
-  for (int j = 1; j < 3; ++j)
-    if (std::fabs(ab[j]) > std::fabs(ab[k])) k = j;
-  std::sort(out.begin(), out.end(), [&](std::uint32_t x, std::uint32_t y) {
-    return ab[k] > 0 ? input[x][k] < input[y][k] : input[x][k] > input[y][k];
-  });
-  return out;
+  if (!(len > 2 * reach)) return false;
+  const double t = (ab[0] * av[0] + ab[1] * av[1] + ab[2] * av[2]) / (len * len);
+  if (!(t * len > reach && (1 - t) * len > reach)) return false;
+  return norm(cross(ab, av)) <= reach * len;
 }
 
 using SegmentIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t>;
@@ -427,11 +403,15 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
   // off the slab, on opposite sides of the facet's plane. Between two regions every face
   // in the slab is held by two tets, and a flat tet (its fourth corner in the slab and
   // not outside the facet's region) stacks two layers of them; each covers the facet, so
-  // one is kept: a face of a flat tet is in the facet only where the tet's outward normal
-  // points down the chart's dropped axis (the projected face, in the tet's outward order,
-  // turns clockwise: exact). In a stack of flat tets only the faces under the lowest one
-  // remain. (A thin tet whose fourth corner lies in the slab outside the region, on a
-  // neighbour a hair from coplanar, is no flat tet: its face on the facet is a subfacet.)
+  // one is kept: the one the mesher made the facet's, from the faces it lists (a mesher
+  // lists a facet between regions: TetGen's and pdr's .face files do); a mesh that lists
+  // none gets the lower one: a face of a flat tet is then in the facet only where the tet's
+  // outward normal points down the chart's dropped axis (the projected face, in the tet's
+  // outward order, turns clockwise: exact), and in a stack of flat tets only the faces
+  // under the lowest one remain (encroachment.subfacets may then fail where the mesher
+  // took the upper layer: list the faces to say which).
+  // (A thin tet whose fourth corner lies in the slab outside the region, on a neighbour a
+  // hair from coplanar, is no flat tet: its face on the facet is a subfacet.)
   struct Candidate {
     std::uint32_t face, facet;
     double distance;
@@ -487,6 +467,17 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
     const auto& k = kFaceVertices[r.local];
     return signs::orient2d(mesh.points[t[k[0]]], mesh.points[t[k[1]]], mesh.points[t[k[2]]], f.drop);
   };
+  // Whether the mesh lists face t (its vertex ids sorted, as the topology's): built on
+  // first use.
+  std::vector<Tri> listed_faces;
+  const auto listed = [&](const Tri& t) {
+    if (listed_faces.empty()) {
+      listed_faces.assign(mesh.faces.begin(), mesh.faces.end());
+      for (Tri& x : listed_faces) std::sort(x.begin(), x.end());
+      std::sort(listed_faces.begin(), listed_faces.end());
+    }
+    return std::binary_search(listed_faces.begin(), listed_faces.end(), t);
+  };
   for (std::size_t i = 0; i < candidates.size();) {
     const std::uint32_t fid = candidates[i].face;
     std::optional<std::uint32_t> in;
@@ -499,10 +490,14 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
         const int a = side(f, holders[0]), b = side(f, holders[1]);
         if (a == 0 || b == 0 || a == b) continue;
       } else if (f.tolerance_vertices > 0 && holders.size() == 2 &&
-                 std::any_of(holders.begin(), holders.end(), [&](const FaceRef& r) {
-                   return flat_on(f, r) && outward_turn(f, r) != Sign::Negative;
-                 })) {
-        continue;
+                 (flat_on(f, holders[0]) || flat_on(f, holders[1]))) {
+        // Which layer the mesher made the facet's: the faces it lists, if it lists any;
+        // else the lower one.
+        if (!mesh.faces.empty() ? !listed(topo.faces[fid])
+                                : std::any_of(holders.begin(), holders.end(), [&](const FaceRef& r) {
+                                    return flat_on(f, r) && outward_turn(f, r) != Sign::Negative;
+                                  }))
+          continue;
       }
       if (!in || c.distance < nearest) in = c.facet, nearest = c.distance;
     }
@@ -535,14 +530,31 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
     if (it != order.end() && !lex_less(p, mesh.points[*it])) m.mesh_vertex[i] = *it;
   }
   const double tol = options.relative_tolerance;
+  SegmentIndex seg_index;
   // Rounded input: the input vertices used by the polygons, by mesh vertex, and which
-  // polygons have which edges and vertices (tolerance_pivots).
+  // polygons have which edges and vertices (within_rounding).
   const double u_coord = options.coordinate_uncertainty;
+  const double reach = 2 * u_coord;
+  using Edge = std::pair<std::uint32_t, std::uint32_t>;  // input ids, first < second
+  std::vector<Edge> edges;                                // in first-seen order
+  for (const PlcFacet& f : domain.facets)
+    for (const auto& poly : f.polygons) {
+      if (poly.size() < 2) continue;
+      const std::size_t n_edges = poly.size() == 2 ? 1 : poly.size();
+      for (std::size_t i = 0; i < n_edges; ++i) {
+        const std::uint32_t u = poly[i], v = poly[(i + 1) % poly.size()];
+        if (u == v || u >= domain.points.size() || v >= domain.points.size()) continue;
+        if (seg_index.emplace(std::pair{std::min(u, v), std::max(u, v)}, edges.size()).second)
+          edges.push_back({std::min(u, v), std::max(u, v)});
+      }
+    }
+  // The vertices on each edge within the rounding: (vertex, edge index), then those of
+  // vertices near one edge only.
+  std::vector<std::pair<std::uint32_t, std::size_t>> rounded;
   std::vector<std::int64_t> input_of(u_coord > 0 ? mesh.points.size() : 0, -1);
-  using Edge = std::pair<std::uint32_t, std::uint32_t>;
-  std::vector<std::pair<Edge, std::uint32_t>> edge_polys;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> poly_vertices;
   if (u_coord > 0) {
+    std::vector<std::pair<Edge, std::uint32_t>> edge_polys;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> poly_vertices;
     std::uint32_t id = 0;
     for (const PlcFacet& f : domain.facets)
       for (const auto& poly : f.polygons) {
@@ -557,36 +569,77 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
       }
     std::sort(edge_polys.begin(), edge_polys.end());
     std::sort(poly_vertices.begin(), poly_vertices.end());
-  }
-  SegmentIndex seg_index;
-  for (const PlcFacet& f : domain.facets)
-    for (const auto& poly : f.polygons) {
-      if (poly.size() < 2) continue;
-      const std::size_t edges = poly.size() == 2 ? 1 : poly.size();
-      for (std::size_t i = 0; i < edges; ++i) {
-        std::uint32_t u = poly[i], v = poly[(i + 1) % poly.size()];
-        if (u == v || u >= domain.points.size() || v >= domain.points.size()) continue;
-        if (!seg_index.emplace(std::pair{std::min(u, v), std::max(u, v)}, m.segments.size()).second)
+    for (std::size_t ei = 0; ei < edges.size(); ++ei) {
+      const Edge& e = edges[ei];
+      const Point& a = domain.points[e.first];
+      const Point& b = domain.points[e.second];
+      const Box box{{std::min(a[0], b[0]) - reach, std::min(a[1], b[1]) - reach,
+                     std::min(a[2], b[2]) - reach},
+                    {std::max(a[0], b[0]) + reach, std::max(a[1], b[1]) + reach,
+                     std::max(a[2], b[2]) + reach}};
+      std::vector<std::uint32_t> found;
+      grid.query(box, [&](std::uint32_t mv, const Point&) {
+        if (input_of[mv] >= 0) found.push_back(static_cast<std::uint32_t>(input_of[mv]));
+      });
+      std::sort(found.begin(), found.end());
+      found.erase(std::unique(found.begin(), found.end()), found.end());
+      for (const std::uint32_t w : found) {
+        if (w == e.first || w == e.second || exactly_collinear(a, b, domain.points[w]) ||
+            !within_rounding(a, b, domain.points[w], reach))
           continue;
-        const Edge e{std::min(u, v), std::max(u, v)};
-        auto near = [&](const Box& box, auto&& visit) {
-          grid.query(box, [&](std::uint32_t id, const Point&) {
-            if (input_of[id] >= 0) visit(static_cast<std::uint32_t>(input_of[id]));
-          });
-        };
-        auto with_edge = [&](std::uint32_t w) {
-          auto it = std::lower_bound(edge_polys.begin(), edge_polys.end(), std::pair{e, 0u});
-          for (; it != edge_polys.end() && it->first == e; ++it)
-            if (std::binary_search(poly_vertices.begin(), poly_vertices.end(),
-                                   std::pair{it->second, w}))
-              return true;
-          return false;
-        };
-        const std::vector<std::uint32_t> pivots =
-            tolerance_pivots(u, v, domain.points, u_coord, near, with_edge);
-        m.segments.push_back(map_segment(u, v, pivots, m, mesh, grid, tol));
+        bool with_edge = false;
+        auto it = std::lower_bound(edge_polys.begin(), edge_polys.end(), std::pair{e, 0u});
+        for (; it != edge_polys.end() && it->first == e && !with_edge; ++it)
+          with_edge = std::binary_search(poly_vertices.begin(), poly_vertices.end(),
+                                         std::pair{it->second, w});
+        if (!with_edge) rounded.push_back({w, ei});
       }
     }
+    std::sort(rounded.begin(), rounded.end());
+  }
+  std::vector<std::vector<std::uint32_t>> pivots(edges.size());
+  for (std::size_t i = 0; i < rounded.size();) {
+    std::size_t j = i;
+    while (j < rounded.size() && rounded[j].first == rounded[i].first) ++j;
+    if (j == i + 1) pivots[rounded[i].second].push_back(rounded[i].first);
+    i = j;
+  }
+  for (std::size_t ei = 0; ei < edges.size(); ++ei) {
+    const auto [u, v] = edges[ei];
+    std::vector<std::uint32_t>& p = pivots[ei];
+    if (!p.empty()) {
+      // With a vertex on the edge within the rounding, the mesh holds the straight pieces
+      // between every vertex on it: the exact ones are pivots too.
+      const Point& a = domain.points[u];
+      const Point& b = domain.points[v];
+      Box box{a, a};
+      for (int c = 0; c < 3; ++c) {
+        box.lo[c] = std::min(a[c], b[c]);
+        box.hi[c] = std::max(a[c], b[c]);
+      }
+      grid.query(box, [&](std::uint32_t mv, const Point& q) {
+        if (input_of[mv] < 0) return;
+        const auto w = static_cast<std::uint32_t>(input_of[mv]);
+        if (w != u && w != v && exactly_collinear(a, b, q) &&
+            signs::dot(q, a, b, a) == Sign::Positive && signs::dot(q, b, a, b) == Sign::Positive)
+          p.push_back(w);
+      });
+      std::sort(p.begin(), p.end());
+      p.erase(std::unique(p.begin(), p.end()), p.end());
+      // From u (the smaller id) to v along the dominant coordinate, ties by id, as pdr mesh.
+      int k = 0;
+      for (int j = 1; j < 3; ++j)
+        if (std::fabs(b[j] - a[j]) > std::fabs(b[k] - a[k])) k = j;
+      const bool up = a[k] < b[k];
+      std::sort(p.begin(), p.end(), [&](std::uint32_t x, std::uint32_t y) {
+        const double px = domain.points[x][k], py = domain.points[y][k];
+        if (px != py) return up ? px < py : px > py;
+        return x < y;
+      });
+    }
+    SegmentMap sm = map_segment(u, v, p, m, mesh, grid, tol);
+    m.segments.push_back(std::move(sm));
+  }
   std::vector<std::uint8_t> dropped_vertex(domain.points.size(), 0);
   for (const std::uint32_t v : options.dropped_vertices)
     if (v < dropped_vertex.size()) dropped_vertex[v] = 1;

@@ -16,7 +16,9 @@
 // polygon would cross the split line or leave the edge bounding one facet side. The test
 // is in floating point, a classification of imprecise input; it never applies to a vertex
 // of a polygon that has the edge (a polygon narrower than the rounding is not read as
-// touching itself), and the pieces a-v, v-b then bend by at most 2u at v.
+// touching itself), nor to a vertex within 2u of two edges (near a corner where they
+// meet: which one it is on is not what the coordinates say); the pieces a-v, v-b then
+// bend by at most 2u at v. pdr check (check/domain.cpp) classifies alike.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -92,8 +94,10 @@ void split_edges(const Plc& plc, double uncertainty, std::vector<FacetPolys>& po
   for (std::size_t i = 0; i < used.size(); ++i) boxes[i].add(pts[used[i]]);
   const Bvh bvh(std::move(boxes));
 
-  // Interior vertices of each edge, ordered from the smaller id to the larger.
+  // Interior vertices of each edge, ordered from the smaller id to the larger: exact ones
+  // at once, rounded ones (edge, vertex) after the pass over every edge.
   std::map<Edge, std::vector<std::uint32_t>> inner;
+  std::vector<std::pair<std::uint32_t, Edge>> rounded;
   for (const Edge& e : edges) {
     const Point &a = pts[e[0]], &b = pts[e[1]];
     Box q;
@@ -107,21 +111,35 @@ void split_edges(const Plc& plc, double uncertainty, std::vector<FacetPolys>& po
     bvh.for_overlapping(q, [&](std::uint32_t item) {
       const std::uint32_t v = used[item];
       if (v == e[0] || v == e[1]) return;
-      if (collinear(a, b, pts[v]) ? strictly_between(a, b, pts[v])
-                                  : reach > 0 && within_rounding(a, b, pts[v]) &&
-                                        !in_loop_with(e, v))
-        found.push_back(v);
+      if (collinear(a, b, pts[v])) {
+        if (strictly_between(a, b, pts[v])) found.push_back(v);
+      } else if (reach > 0 && within_rounding(a, b, pts[v]) && !in_loop_with(e, v)) {
+        rounded.push_back({v, e});
+      }
     });
-    if (found.empty()) continue;
-    // Ordered along the edge's dominant coordinate (exact for collinear vertices).
+    if (!found.empty()) inner.emplace(e, std::move(found));
+  }
+  // A vertex within the rounding of two edges lies near where they meet (or between two
+  // edges closer than the rounding): the coordinates do not say which it is on, so it
+  // splits neither and stays as given.
+  std::sort(rounded.begin(), rounded.end());
+  for (std::size_t i = 0; i < rounded.size();) {
+    std::size_t j = i;
+    while (j < rounded.size() && rounded[j].first == rounded[i].first) ++j;
+    if (j == i + 1) inner[rounded[i].second].push_back(rounded[i].first);
+    i = j;
+  }
+  // Ordered along the edge's dominant coordinate (exact for collinear vertices), ties by id.
+  for (auto& [e, found] : inner) {
+    const Point &a = pts[e[0]], &b = pts[e[1]];
     int k = 0;
     for (int j = 1; j < 3; ++j)
       if (std::abs(b[j] - a[j]) > std::abs(b[k] - a[k])) k = j;
     const bool up = a[k] < b[k];
     std::sort(found.begin(), found.end(), [&](std::uint32_t x, std::uint32_t y) {
-      return up ? pts[x][k] < pts[y][k] : pts[x][k] > pts[y][k];
+      if (pts[x][k] != pts[y][k]) return up ? pts[x][k] < pts[y][k] : pts[x][k] > pts[y][k];
+      return x < y;
     });
-    inner.emplace(e, std::move(found));
   }
   if (inner.empty()) return;
 

@@ -263,6 +263,15 @@ TEST(Conformity, AFlatTetOnAToleranceFacetBetweenTwoRegionsCoversItOnce) {
     EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
   EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 2u + 8u);
   EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
+  // A mesh that lists its faces says which layer is the facet's: here the upper one (ABQ,
+  // BCQ, CAQ with ACD), which then covers the base once.
+  MeshData listed = m;
+  listed.faces = {{0, 1, 5}, {1, 2, 5}, {2, 0, 5}, {0, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4},
+                  {3, 0, 4}, {0, 1, 6}, {1, 2, 6}, {2, 3, 6}, {3, 0, 6}};
+  const Report l = run(listed, d);
+  for (const char* id : {"conformity.facets", "conformity.volume"})
+    EXPECT_EQ(result(l, id).status, Status::Pass) << id << "\n" << to_text(l);
+  EXPECT_EQ(count(l, "conformity.facets", "subfacets"), 4u + 8u);
 }
 
 TEST(FacetRegion, NestedPolygonWithHoleIsARing) {

@@ -347,6 +347,25 @@ TEST(PlcValidate, AcceptsVertexWithinRoundingOfAnotherFacetsEdge) {
   EXPECT_GT(off_edge, 40);  // rounding moved most of the vertices off their edges
 }
 
+// A vertex within the rounding of two edges (a point of a facet 3.2e-6 from its 60-degree
+// corner, printed with 7 digits: 2u = 1.7e-6 from both edges' lines) is near where they
+// meet, not on either: it splits neither and stays a vertex of the facet, as given (it was
+// inserted into both, and the facet's polygon said to touch itself).
+TEST(PlcValidate, AVertexWithinRoundingOfTwoEdgesSplitsNeither) {
+  Plc p;
+  p.points = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.8660254, 0}, {0.3, 0.3, 1}, {2.771281e-06, 1.6e-06, 0}};
+  for (const std::vector<std::vector<std::uint32_t>>& polys :
+       std::vector<std::vector<std::vector<std::uint32_t>>>{
+           {{0, 1, 2}, {4}}, {{0, 1, 3}}, {{1, 2, 3}}, {{2, 0, 3}}}) {
+    PlcFacet f;
+    f.polygons = polys;
+    p.facets.push_back(f);
+  }
+  relabel(p);
+  const PlcDomain dom = build_domain(p);
+  EXPECT_EQ(dom.segments.size(), 6u);
+}
+
 TEST(PlcValidate, AcceptsCollinearOverlappingEdges) {
   // The box [0,3]x[0,1]x[0,1] with its top split at x = 2 and its front wall (y = 0) split
   // at x = 1: the top-left facet's front edge (x in [0,2]) and the front-right wall's top
