@@ -95,6 +95,7 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
                     {"subfacet", f.deferred.subfacet},
                     {"removed", f.deferred.removed},
                     {"refused", f.deferred.refused}}},
+      {"deferred_early", s.deferred_early},
       {"setbacks", s.setbacks},
       {"rounds", s.rounds},
       {"fetches_served", s.fetches_served},

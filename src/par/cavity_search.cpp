@@ -1,32 +1,53 @@
 // The two local steps of the distributed cavity search (par/cavity_search.hpp).
 #include "par/cavity_search.hpp"
 
+#include <algorithm>
 #include <unordered_set>
 
 #include "delaunay/conflict.hpp"
 
 namespace pdr::par {
 
-const RootCavity& CavitySearch::root_cavity(const Submesh& s, const Point& p, TetId hint) {
+const RootCavity& CavitySearch::root_cavity(const Submesh& s, const Point& p, TetId hint,
+                                            bool hint_conflicts, const Reject& reject) {
   RootCavity& out = root_;
   out.kind = RootCavity::Kind::Complete;
   out.cavity.clear();
   out.fetch.clear();
   out.walk = false;
   const TetStore& st = s.store();
-  const Location loc = locate(st, s.points(), p, hint, rng_);
-  if (loc.kind == Location::Kind::OnVertex) {
-    out.kind = RootCavity::Kind::OnVertex;
-    return out;
+  TetId seed = kNoTet;
+  // In conflict with p, so p is no vertex: strictly inside the circumsphere of a Delaunay
+  // tet there is none.
+  const VertexId* hv = st.vertices(hint);
+  if (hint_conflicts && std::none_of(hv, hv + 4, [&](VertexId v) {
+        return v < s.points().size() && s.points()[v] == p;
+      }) && in_conflict(st, s.points(), hint, p)) {
+    seed = hint;
+  } else {
+    const Location loc = locate(st, s.points(), p, hint, rng_);
+    if (loc.kind == Location::Kind::OnVertex) {
+      out.kind = RootCavity::Kind::OnVertex;
+      return out;
+    }
+    if (loc.kind == Location::Kind::Remote) {
+      const Side& side = s.proxy_side(loc.tet);
+      out.kind = RootCavity::Kind::Remote;
+      out.walk = true;
+      out.fetch[side.claim.holder].push_back(side);
+      return out;
+    }
+    seed = loc.tet;
   }
-  if (loc.kind == Location::Kind::Remote) {
-    const Side& side = s.proxy_side(loc.tet);
-    out.kind = RootCavity::Kind::Remote;
-    out.walk = true;
-    out.fetch[side.claim.holder].push_back(side);
-    return out;
+  if (reject) {
+    if (!builder_.build_until(st, s.points(), p, seed, out.cavity,
+                              [&](TetId, int, TetId u) { return reject(u); })) {
+      out.kind = RootCavity::Kind::Rejected;
+      return out;
+    }
+  } else {
+    builder_.build(st, s.points(), p, seed, out.cavity);
   }
-  builder_.build(st, s.points(), p, loc.tet, out.cavity);
   for (const TetId t : out.cavity.ring)
     if (st.is_proxy(t)) {
       const Side& side = s.proxy_side(t);

@@ -19,6 +19,7 @@
 // reads the closure (encroachment, Fig. 2) and relinks the new tets to it.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <span>
 #include <vector>
@@ -30,7 +31,8 @@
 namespace pdr::par {
 
 struct RootCavity {
-  enum class Kind { Complete, Remote, OnVertex } kind = Kind::Complete;
+  // Rejected: the `reject` test of root_cavity() stopped the search at a conflict tet.
+  enum class Kind { Complete, Remote, OnVertex, Rejected } kind = Kind::Complete;
   Cavity cavity;                                  // Complete: all local, ring included
   std::map<ActorId, std::vector<Side>> fetch;     // Remote: tets behind the proxies met,
                                                   // by the submesh each proxy names
@@ -40,8 +42,14 @@ struct RootCavity {
 class CavitySearch {
  public:
   // Locates p from `hint` (a live real tet of s) and builds its cavity in s. The result
-  // lives in this object (its buffers are reused) until the next call.
-  const RootCavity& root_cavity(const Submesh& s, const Point& p, TetId hint);
+  // lives in this object (its buffers are reused) until the next call. `hint_conflicts`:
+  // p is hint's circumcenter (a tet's step), so hint is in conflict with p when the exact
+  // test says so, and the cavity grows from it without the walk to p (the conflict region
+  // is connected, and holds the tet that holds p). `reject`, when given, is asked about
+  // each conflict tet as it joins; true stops the search (Rejected).
+  using Reject = std::function<bool(TetId)>;
+  const RootCavity& root_cavity(const Submesh& s, const Point& p, TetId hint,
+                                bool hint_conflicts = false, const Reject& reject = {});
   // The tets of s to migrate to the root for the requested tets `wanted` (those s holds;
   // the others are skipped: the caller redirects them), each once; for a walk, the tet
   // where the walk stopped comes first (the root goes on from it).

@@ -26,7 +26,8 @@ InsertionStats& operator+=(InsertionStats& a, const InsertionStats& b) {
   a.commits += b.commits, a.rounds += b.rounds, a.setbacks += b.setbacks;
   a.duplicates += b.duplicates, a.fetches_served += b.fetches_served, a.refused += b.refused;
   a.tets_sent += b.tets_sent, a.points_passed += b.points_passed, a.deferred += b.deferred;
-  a.gone += b.gone, a.local_while_waiting += b.local_while_waiting, a.splits += b.splits;
+  a.gone += b.gone, a.deferred_early += b.deferred_early;
+  a.local_while_waiting += b.local_while_waiting, a.splits += b.splits;
   a.facet_points += b.facet_points;
   a.completed_local_s += b.completed_local_s;
   a.completed_distributed_s += b.completed_distributed_s;
@@ -166,8 +167,14 @@ bool InsertionActor::local_step(const Waiting& w) {
     parked_.push_back(w);
     return true;
   }
-  const RootCavity& rc =
-      search_.root_cavity(sub_, w.a != kNoGid ? w.p : rules_->point(sub_, t), from);
+  const bool tet_step = w.a == kNoGid && rules_ != nullptr;
+  const Point p = w.a != kNoGid ? w.p : rules_->point(sub_, t);
+  const RootCavity& rc = search_.root_cavity(sub_, p, from, tet_step, reject(p, tet_step));
+  if (rc.kind == RootCavity::Kind::Rejected) {
+    ++stats_.deferred_early;
+    defer(w);
+    return true;
+  }
   const auto locked = [&](TetId u) { return locked_.count(u) != 0; };
   if (rc.kind != RootCavity::Kind::Complete ||
       std::any_of(rc.cavity.conflict.begin(), rc.cavity.conflict.end(), locked) ||
@@ -200,12 +207,7 @@ bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
     return false;
   }
   if (v.kind == Verdict::Kind::Defer) {
-    if (w.a != kNoGid) {  // a step on ∂Ω: dropped
-      requeue_origin(w);
-      return false;
-    }
-    ++stats_.deferred;
-    if (const TetId t = sub_.find_tet(w.tet); t != kNoTet) sub_.mark_deferred(t);
+    defer(w);
     return false;
   }
   if (w.a != kNoGid) ++(w.c == kNoGid ? stats_.splits : stats_.facet_points);
@@ -216,6 +218,20 @@ bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
   for (const TetId t : made_) want(t);
   requeue_origin(w);
   return true;
+}
+
+void InsertionActor::defer(const Waiting& w) {
+  if (w.a != kNoGid) {  // a step on ∂Ω: dropped
+    requeue_origin(w);
+    return;
+  }
+  ++stats_.deferred;
+  if (const TetId t = sub_.find_tet(w.tet); t != kNoTet) sub_.mark_deferred(t);
+}
+
+CavitySearch::Reject InsertionActor::reject(const Point& p, bool tet_step) {
+  if (!tet_step) return {};
+  return [this, p](TetId u) { return rules_->defers_at(sub_, u, p); };
 }
 
 void InsertionActor::requeue_origin(const Waiting& w) {
@@ -294,7 +310,23 @@ void InsertionActor::round() {
     setback();
     return;
   }
-  const RootCavity& rc = search_.root_cavity(sub_, s_.w.p, hint);
+  // A tet's step: the cavity grows from the hint when it conflicts with p (the tet itself
+  // while it is here), and the rules may defer the step at its first telling tet.
+  const bool tet_step = s_.w.a == kNoGid && s_.w.tet != kNoGid && rules_ != nullptr;
+  const RootCavity& rc =
+      search_.root_cavity(sub_, s_.w.p, hint, tet_step, reject(s_.w.p, tet_step));
+  if (rc.kind == RootCavity::Kind::Rejected) {
+    // As a complete cavity's Defer, unless the tet has left (its holder steps it).
+    const bool gone = sub_.find_tet(s_.w.tet) == kNoTet;
+    finish();
+    if (gone) {
+      ++stats_.gone;
+    } else {
+      ++stats_.deferred_early;
+      defer(s_.w);
+    }
+    return;
+  }
   if (rc.kind == RootCavity::Kind::OnVertex) {
     ++stats_.duplicates;
     // A tet's step whose point is a vertex already (its rounded circumcenter): left to

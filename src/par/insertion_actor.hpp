@@ -65,6 +65,8 @@ struct InsertionStats {
   std::uint64_t fetches_served = 0, refused = 0, tets_sent = 0, points_passed = 0;
   std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
                                          // tets that had left when their turn came
+  std::uint64_t deferred_early = 0;  // of the deferred, those the rules decided at a tet
+                                     // of a partial cavity (StepRules::defers_at)
   std::uint64_t local_while_waiting = 0;  // steps committed while a search waited
   std::uint64_t splits = 0;        // commits that split a subsegment (Refine(s))
   std::uint64_t facet_points = 0;  // commits of a subfacet's circumcenter (Refine(f))
@@ -145,6 +147,11 @@ class InsertionActor {
   void reply_in(bool refused);
   void round();  // one round of the active search
   void setback();
+  // A step deferred (a tet's: marked, counted) or dropped (a step on ∂Ω: its origin
+  // queued again).
+  void defer(const Waiting& w);
+  // The early test of a tet's step at p (StepRules::defers_at); none for other steps.
+  CavitySearch::Reject reject(const Point& p, bool tet_step);
   void finish();
   TetId any_real_tet();
   void send(int to, Bytes b);

@@ -111,6 +111,33 @@ Verdict RefinementRules::refine_element(const Submesh& s, std::array<VertexId, 3
   return out;
 }
 
+bool RefinementRules::defers_at(const Submesh& s, TetId u, const Point& p) {
+  if (surface_steps_enabled_) return false;
+  const TetStore& st = s.store();
+  if (st.is_ghost(u) || !s.inside(u)) {
+    ++deferred_.outside;
+    return true;
+  }
+  const VertexId* v = st.vertices(u);
+  if (!may_touch_d(s, v)) return false;
+  const auto pts = s.points();
+  for (const auto& e : tables::kEdgeVertex)
+    if (subsegment(s, v[e[0]], v[e[1]]) &&
+        in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative) {
+      ++deferred_.subsegment;
+      return true;
+    }
+  for (int f = 0; f < 4; ++f) {
+    const auto& fv = tables::kFaceVertex[f];
+    if (subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]) &&
+        in_equatorial_ball(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], p) != Sign::Negative) {
+      ++deferred_.subfacet;
+      return true;
+    }
+  }
+  return false;
+}
+
 Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
   plan_.kind = Plan::Kind::None;
   const TetStore& st = s.store();

@@ -99,6 +99,11 @@ class RefinementRules final : public StepRules {
   bool wants(const Submesh& s, TetId t) const override;
   Point point(const Submesh& s, TetId t) const override;
   Verdict accept(const Submesh& s, const Cavity& c) override;
+  // Without surface steps every verdict but Commit is Defer: a conflict tet outside Ω, or
+  // one with a subsegment edge or subfacet face that p encroaches, defers the step
+  // (counted as accept() counts it). With surface steps, false (Fig. 2's order needs the
+  // whole closure).
+  bool defers_at(const Submesh& s, TetId u, const Point& p) override;
   Verdict accept_surface(const Submesh& s, const Cavity& c, Gid a, Gid b, Gid cc) override;
   VertexId commit(Submesh& s, const Cavity& c) override;
   // A committed circumcenter is off ∂Ω (a step that would put one on it is deferred).

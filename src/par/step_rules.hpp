@@ -46,6 +46,11 @@ class StepRules {
   // (commit(s, c) next), Split (Refine(f)'s point encroaches that subsegment), or Defer
   // (the step is dropped).
   virtual Verdict accept_surface(const Submesh&, const Cavity&, Gid, Gid, Gid) { return {}; }
+  // Whether tet u, as it joins the conflict region of a tet's step at point p, already
+  // decides accept(): true only when accept() would then Defer whatever else the cavity
+  // holds, so that the search stops there and the step is deferred without building (and
+  // migrating) the rest of a far circumcenter's cavity.
+  virtual bool defers_at(const Submesh&, TetId, const Point&) { return false; }
   // Commits the cavity that accept() or accept_surface() just accepted: the new vertex
   // and tets with their inside flags (and D's labels, for a step on ∂Ω). Returns the
   // vertex.
