@@ -276,7 +276,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   std::size_t worst = 0;
   for (std::size_t r = 0; r < figures.size(); ++r)
     if (figures[r].seconds > figures[worst].seconds) worst = r;
-  summary.set("parallel", nlohmann::json{{"schema_version", 2},
+  summary.set("parallel", nlohmann::json{{"schema_version", 3},
                                          {"worst_rank", figures.empty() ? nlohmann::json(nullptr)
                                                                         : nlohmann::json(worst)},
                                          {"ranks", w.size},

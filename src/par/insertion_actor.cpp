@@ -167,11 +167,12 @@ bool InsertionActor::local_step(const Waiting& w) {
     parked_.push_back(w);
     return true;
   }
-  const bool tet_step = w.a == kNoGid && rules_ != nullptr;
+  const bool tet_step = w.a == kNoGid && w.tet != kNoGid && rules_ != nullptr;
   const Point p = w.a != kNoGid ? w.p : rules_->point(sub_, t);
   const RootCavity& rc = search_.root_cavity(sub_, p, from, tet_step, reject(p, tet_step));
   if (rc.kind == RootCavity::Kind::Rejected) {
     ++stats_.deferred_early;
+    rules_->count_early_deferral();
     defer(w);
     return true;
   }
@@ -323,6 +324,7 @@ void InsertionActor::round() {
       ++stats_.gone;
     } else {
       ++stats_.deferred_early;
+      rules_->count_early_deferral();
       defer(s_.w);
     }
     return;

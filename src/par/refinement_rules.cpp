@@ -115,7 +115,7 @@ bool RefinementRules::defers_at(const Submesh& s, TetId u, const Point& p) {
   if (surface_steps_enabled_) return false;
   const TetStore& st = s.store();
   if (st.is_ghost(u) || !s.inside(u)) {
-    ++deferred_.outside;
+    early_ = &deferred_.outside;
     return true;
   }
   const VertexId* v = st.vertices(u);
@@ -124,14 +124,14 @@ bool RefinementRules::defers_at(const Submesh& s, TetId u, const Point& p) {
   for (const auto& e : tables::kEdgeVertex)
     if (subsegment(s, v[e[0]], v[e[1]]) &&
         in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative) {
-      ++deferred_.subsegment;
+      early_ = &deferred_.subsegment;
       return true;
     }
   for (int f = 0; f < 4; ++f) {
     const auto& fv = tables::kFaceVertex[f];
     if (subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]) &&
         in_equatorial_ball(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], p) != Sign::Negative) {
-      ++deferred_.subfacet;
+      early_ = &deferred_.subfacet;
       return true;
     }
   }
@@ -148,6 +148,7 @@ Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
   // then a conflict tet outside Ω, then an element of D the cavity would take out of T.
   std::optional<std::array<VertexId, 3>> best;  // the largest encroached subfacet
   std::array<Point, 3> best_p{};
+  TetId best_t = kNoTet;  // a closure tet with that face: where its point's search starts
   bool outside = false, removed = false;
   kept_.clear();
   const auto survives = [&](VertexId a, VertexId b) {
@@ -180,7 +181,7 @@ Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
         const VertexId a = v[e[0]], b = v[e[1]];
         if (!subsegment(s, a, b)) continue;
         if (in_diametral_ball(pts[a], pts[b], c.point) != Sign::Negative)
-          return refine_element(s, {a, b, kNoVertex}, c.seed);
+          return refine_element(s, {a, b, kNoVertex}, t);
         if (conflict && !removed && !survives(a, b)) removed = true;
       }
       for (int f = 0; f < 4; ++f) {
@@ -190,7 +191,7 @@ Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
         const std::array<Point, 3> q{pts[x[0]], pts[x[1]], pts[x[2]]};
         if (in_equatorial_ball(q[0], q[1], q[2], c.point) != Sign::Negative &&
             (!best || refine::larger_subfacet(q, best_p)))
-          best = x, best_p = q;
+          best = x, best_p = q, best_t = t;
         // A subfacet face of a conflict tet survives only on the boundary (between two
         // inside conflict tets lies an internal facet, domain/domain.hpp, which the
         // cavity would take out of T).
@@ -200,7 +201,7 @@ Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
       }
     }
   }
-  if (best) return refine_element(s, *best, c.seed);
+  if (best) return refine_element(s, *best, best_t);
   if (outside) {
     ++deferred_.outside;
     return {};

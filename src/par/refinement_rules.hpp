@@ -100,10 +100,15 @@ class RefinementRules final : public StepRules {
   Point point(const Submesh& s, TetId t) const override;
   Verdict accept(const Submesh& s, const Cavity& c) override;
   // Without surface steps every verdict but Commit is Defer: a conflict tet outside Ω, or
-  // one with a subsegment edge or subfacet face that p encroaches, defers the step
-  // (counted as accept() counts it). With surface steps, false (Fig. 2's order needs the
-  // whole closure).
+  // one with a subsegment edge or subfacet face that p encroaches, defers the step. With
+  // surface steps, false (Fig. 2's order needs the whole closure). The reason is that of
+  // the first such tet the search meets (accept() takes Fig. 2's order over the whole
+  // closure), counted by count_early_deferral().
   bool defers_at(const Submesh& s, TetId u, const Point& p) override;
+  void count_early_deferral() override {
+    if (early_ != nullptr) ++*early_;
+    early_ = nullptr;
+  }
   Verdict accept_surface(const Submesh& s, const Cavity& c, Gid a, Gid b, Gid cc) override;
   VertexId commit(Submesh& s, const Cavity& c) override;
   // A committed circumcenter is off ∂Ω (a step that would put one on it is deferred).
@@ -165,6 +170,7 @@ class RefinementRules final : public StepRules {
   DeferCounts deferred_;
   std::vector<std::pair<VertexId, VertexId>> kept_;  // accept(): the boundary's edges
   const bool surface_steps_enabled_;
+  std::uint64_t* early_ = nullptr;  // defers_at(): the counter of its last reason
   std::set<Key> refused_;
   // accept_surface() -> commit(): the step's change of D (local vertex ids). One rules
   // object serves every actor of a rank: the actor calls commit() right after the accept

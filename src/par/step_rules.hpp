@@ -51,6 +51,8 @@ class StepRules {
   // holds, so that the search stops there and the step is deferred without building (and
   // migrating) the rest of a far circumcenter's cavity.
   virtual bool defers_at(const Submesh&, TetId, const Point&) { return false; }
+  // The step that defers_at() stopped is deferred: count it by the reason it gave.
+  virtual void count_early_deferral() {}
   // Commits the cavity that accept() or accept_surface() just accepted: the new vertex
   // and tets with their inside flags (and D's labels, for a step on ∂Ω). Returns the
   // vertex.
