@@ -605,7 +605,7 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
     i = j;
   }
   for (std::size_t ei = 0; ei < edges.size(); ++ei) {
-    const auto [u, v] = edges[ei];
+    const std::uint32_t u = edges[ei].first, v = edges[ei].second;
     std::vector<std::uint32_t>& p = pivots[ei];
     if (!p.empty()) {
       // With a vertex on the edge within the rounding, the mesh holds the straight pieces
