@@ -231,7 +231,7 @@ void InsertionActor::defer(const Waiting& w) {
 }
 
 CavitySearch::Reject InsertionActor::reject(const Point& p, bool tet_step) {
-  if (!tet_step) return {};
+  if (!tet_step || !rules_->defers_early()) return {};
   return [this, p](TetId u) { return rules_->defers_at(sub_, u, p); };
 }
 

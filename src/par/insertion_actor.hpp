@@ -150,7 +150,8 @@ class InsertionActor {
   // A step deferred (a tet's: marked, counted) or dropped (a step on ∂Ω: its origin
   // queued again).
   void defer(const Waiting& w);
-  // The early test of a tet's step at p (StepRules::defers_at); none for other steps.
+  // The early test of a tet's step at p (StepRules::defers_at); none for other steps, or
+  // when the rules never defer early.
   CavitySearch::Reject reject(const Point& p, bool tet_step);
   void finish();
   TetId any_real_tet();

@@ -70,13 +70,20 @@ std::optional<std::array<VertexId, 2>> RefinementRules::encroached_subsegment(
   for (const auto* list : tets)
     for (const TetId t : *list) {
       if (st.is_ghost(t) || st.is_proxy(t)) continue;
-      const VertexId* v = st.vertices(t);
-      if (!may_touch_d(s, v)) continue;
-      for (const auto& e : tables::kEdgeVertex)
-        if (subsegment(s, v[e[0]], v[e[1]]) &&
-            in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative)
-          return std::array<VertexId, 2>{v[e[0]], v[e[1]]};
+      if (const auto e = encroached_edge(s, st.vertices(t), p)) return e;
     }
+  return std::nullopt;
+}
+
+std::optional<std::array<VertexId, 2>> RefinementRules::encroached_edge(const Submesh& s,
+                                                                        const VertexId* v,
+                                                                        const Point& p) const {
+  if (!may_touch_d(s, v)) return std::nullopt;
+  const auto pts = s.points();
+  for (const auto& e : tables::kEdgeVertex)
+    if (subsegment(s, v[e[0]], v[e[1]]) &&
+        in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative)
+      return std::array<VertexId, 2>{v[e[0]], v[e[1]]};
   return std::nullopt;
 }
 
@@ -112,7 +119,6 @@ Verdict RefinementRules::refine_element(const Submesh& s, std::array<VertexId, 3
 }
 
 bool RefinementRules::defers_at(const Submesh& s, TetId u, const Point& p) {
-  if (surface_steps_enabled_) return false;
   const TetStore& st = s.store();
   if (st.is_ghost(u) || !s.inside(u)) {
     early_ = &deferred_.outside;
@@ -120,13 +126,11 @@ bool RefinementRules::defers_at(const Submesh& s, TetId u, const Point& p) {
   }
   const VertexId* v = st.vertices(u);
   if (!may_touch_d(s, v)) return false;
+  if (encroached_edge(s, v, p)) {
+    early_ = &deferred_.subsegment;
+    return true;
+  }
   const auto pts = s.points();
-  for (const auto& e : tables::kEdgeVertex)
-    if (subsegment(s, v[e[0]], v[e[1]]) &&
-        in_diametral_ball(pts[v[e[0]]], pts[v[e[1]]], p) != Sign::Negative) {
-      early_ = &deferred_.subsegment;
-      return true;
-    }
   for (int f = 0; f < 4; ++f) {
     const auto& fv = tables::kFaceVertex[f];
     if (subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]) &&

@@ -101,9 +101,10 @@ class RefinementRules final : public StepRules {
   Verdict accept(const Submesh& s, const Cavity& c) override;
   // Without surface steps every verdict but Commit is Defer: a conflict tet outside Ω, or
   // one with a subsegment edge or subfacet face that p encroaches, defers the step. With
-  // surface steps, false (Fig. 2's order needs the whole closure). The reason is that of
-  // the first such tet the search meets (accept() takes Fig. 2's order over the whole
-  // closure), counted by count_early_deferral().
+  // surface steps there is no early deferral (Fig. 2's order needs the whole closure). The
+  // reason is that of the first such tet the search meets (accept() takes Fig. 2's order
+  // over the whole closure), counted by count_early_deferral().
+  bool defers_early() const override { return !surface_steps_enabled_; }
   bool defers_at(const Submesh& s, TetId u, const Point& p) override;
   void count_early_deferral() override {
     if (early_ != nullptr) ++*early_;
@@ -145,6 +146,9 @@ class RefinementRules final : public StepRules {
  private:
   using Key = std::array<Gid, 3>;
   // The subsegment edge of a real tet of `tets` whose closed diametral ball holds p.
+  // A subsegment edge of the tet with vertices v whose closed diametral ball holds p.
+  std::optional<std::array<VertexId, 2>> encroached_edge(const Submesh& s, const VertexId* v,
+                                                         const Point& p) const;
   std::optional<std::array<VertexId, 2>> encroached_subsegment(
       const Submesh& s, std::initializer_list<const std::vector<TetId>*> tets,
       const Point& p) const;

@@ -46,10 +46,13 @@ class StepRules {
   // (commit(s, c) next), Split (Refine(f)'s point encroaches that subsegment), or Defer
   // (the step is dropped).
   virtual Verdict accept_surface(const Submesh&, const Cavity&, Gid, Gid, Gid) { return {}; }
+  // Whether these rules may defer a tet's step before its cavity is whole (defers_at);
+  // false: the search asks nothing per tet.
+  virtual bool defers_early() const { return false; }
   // Whether tet u, as it joins the conflict region of a tet's step at point p, already
-  // decides accept(): true only when accept() would then Defer whatever else the cavity
-  // holds, so that the search stops there and the step is deferred without building (and
-  // migrating) the rest of a far circumcenter's cavity.
+  // decides accept() (asked only when defers_early()): true only when accept() would then
+  // Defer whatever else the cavity holds, so that the search stops there and the step is
+  // deferred without building (and migrating) the rest of a far circumcenter's cavity.
   virtual bool defers_at(const Submesh&, TetId, const Point&) { return false; }
   // The step that defers_at() stopped is deferred: count it by the reason it gave.
   virtual void count_early_deferral() {}
