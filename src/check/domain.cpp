@@ -128,7 +128,8 @@ bool map_piece(std::uint32_t ma, std::uint32_t mb, const MeshView& mesh, const P
 // lie on it within the coordinates' rounding (tolerance_pivots): the mesh vertices on each
 // straight piece between them.
 SegmentMap map_segment(std::uint32_t a, std::uint32_t b, const std::vector<std::uint32_t>& pivots,
-                       const DomainMap& m, const MeshView& mesh, const PointGrid& grid, double tol) {
+                       const DomainMap& m, const MeshView& mesh, const PointGrid& grid,
+                       double tol) {
   SegmentMap s;
   s.a = a;
   s.b = b;
@@ -167,6 +168,104 @@ bool within_rounding(const Point& a, const Point& b, const Point& v, double reac
   const double t = (ab[0] * av[0] + ab[1] * av[1] + ab[2] * av[2]) / (len * len);
   if (!(t * len > reach && (1 - t) * len > reach)) return false;
   return norm(cross(ab, av)) <= reach * len;
+}
+
+// Rounded input (Options::coordinate_uncertainty u > 0): for each edge (a < b) the input
+// vertices it is mapped through (map_segment's pivots), ordered from a to b: none unless some
+// vertex lies on it within the rounding (within_rounding: not a vertex of a polygon with the
+// edge, and near no other edge), and then every vertex on it, exact ones too, since the
+// mesh holds the straight pieces between them; ordered along the dominant coordinate, ties
+// by id, as pdr mesh orders them.
+std::vector<std::vector<std::uint32_t>> edge_pivots(
+    const Plc& domain, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
+    const DomainMap& m, const PointGrid& grid, std::size_t mesh_points, double uncertainty) {
+  std::vector<std::vector<std::uint32_t>> pivots(edges.size());
+  if (!(uncertainty > 0)) return pivots;
+  const double reach = 2 * uncertainty;
+  // The input vertices used by the polygons, by mesh vertex; which polygons have which
+  // edges (those of 3 or more vertices) and vertices.
+  std::vector<std::int64_t> input_of(mesh_points, -1);
+  std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>> edge_polys;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> poly_vertices;
+  std::uint32_t id = 0;
+  for (const PlcFacet& f : domain.facets)
+    for (const auto& poly : f.polygons) {
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const std::uint32_t x = poly[i], y = poly[(i + 1) % poly.size()];
+        if (x >= domain.points.size() || y >= domain.points.size()) continue;
+        if (m.mesh_vertex[x]) input_of[*m.mesh_vertex[x]] = x;
+        poly_vertices.push_back({id, x});
+        if (poly.size() >= 3) edge_polys.push_back({{std::min(x, y), std::max(x, y)}, id});
+      }
+      ++id;
+    }
+  std::sort(edge_polys.begin(), edge_polys.end());
+  std::sort(poly_vertices.begin(), poly_vertices.end());
+  // The input vertices in box b, each once.
+  const auto inputs_in = [&](const Box& b) {
+    std::vector<std::uint32_t> found;
+    grid.query(b, [&](std::uint32_t mv, const Point&) {
+      if (input_of[mv] >= 0) found.push_back(static_cast<std::uint32_t>(input_of[mv]));
+    });
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  };
+  const auto box_of = [&](const Point& a, const Point& b, double pad) {
+    Box box{a, a};
+    for (int c = 0; c < 3; ++c) {
+      box.lo[c] = std::min(a[c], b[c]) - pad;
+      box.hi[c] = std::max(a[c], b[c]) + pad;
+    }
+    return box;
+  };
+  // (vertex, edge) within the rounding, then those of vertices near one edge only.
+  std::vector<std::pair<std::uint32_t, std::size_t>> rounded;
+  for (std::size_t ei = 0; ei < edges.size(); ++ei) {
+    const auto& e = edges[ei];
+    const Point& a = domain.points[e.first];
+    const Point& b = domain.points[e.second];
+    for (const std::uint32_t w : inputs_in(box_of(a, b, reach))) {
+      if (w == e.first || w == e.second || exactly_collinear(a, b, domain.points[w]) ||
+          !within_rounding(a, b, domain.points[w], reach))
+        continue;
+      bool with_edge = false;
+      auto it = std::lower_bound(edge_polys.begin(), edge_polys.end(), std::pair{e, 0u});
+      for (; it != edge_polys.end() && it->first == e && !with_edge; ++it)
+        with_edge = std::binary_search(poly_vertices.begin(), poly_vertices.end(),
+                                       std::pair{it->second, w});
+      if (!with_edge) rounded.push_back({w, ei});
+    }
+  }
+  std::sort(rounded.begin(), rounded.end());
+  for (std::size_t i = 0; i < rounded.size();) {
+    std::size_t j = i;
+    while (j < rounded.size() && rounded[j].first == rounded[i].first) ++j;
+    if (j == i + 1) pivots[rounded[i].second].push_back(rounded[i].first);
+    i = j;
+  }
+  for (std::size_t ei = 0; ei < edges.size(); ++ei) {
+    std::vector<std::uint32_t>& p = pivots[ei];
+    if (p.empty()) continue;
+    const Point& a = domain.points[edges[ei].first];
+    const Point& b = domain.points[edges[ei].second];
+    for (const std::uint32_t w : inputs_in(box_of(a, b, 0))) {
+      const Point& q = domain.points[w];
+      if (w != edges[ei].first && w != edges[ei].second && exactly_collinear(a, b, q) &&
+          signs::dot(q, a, b, a) == Sign::Positive && signs::dot(q, b, a, b) == Sign::Positive)
+        p.push_back(w);
+    }
+    int k = 0;
+    for (int j = 1; j < 3; ++j)
+      if (std::fabs(b[j] - a[j]) > std::fabs(b[k] - a[k])) k = j;
+    const bool up = a[k] < b[k];
+    std::sort(p.begin(), p.end(), [&](std::uint32_t x, std::uint32_t y) {
+      const double px = domain.points[x][k], py = domain.points[y][k];
+      if (px != py) return up ? px < py : px > py;
+      return x < y;
+    });
+  }
+  return pivots;
 }
 
 using SegmentIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t>;
@@ -465,7 +564,8 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
   const auto outward_turn = [&](const FacetMap& f, const FaceRef& r) {
     const Tet& t = mesh.tets[r.tet];
     const auto& k = kFaceVertices[r.local];
-    return signs::orient2d(mesh.points[t[k[0]]], mesh.points[t[k[1]]], mesh.points[t[k[2]]], f.drop);
+    return signs::orient2d(mesh.points[t[k[0]]], mesh.points[t[k[1]]], mesh.points[t[k[2]]],
+                           f.drop);
   };
   // Whether the mesh lists face t (its vertex ids sorted, as the topology's): built on
   // first use.
@@ -493,10 +593,11 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
                  (flat_on(f, holders[0]) || flat_on(f, holders[1]))) {
         // Which layer the mesher made the facet's: the faces it lists, if it lists any;
         // else the lower one.
+        const auto upper = [&](const FaceRef& r) {
+          return flat_on(f, r) && outward_turn(f, r) != Sign::Negative;
+        };
         if (!mesh.faces.empty() ? !listed(topo.faces[fid])
-                                : std::any_of(holders.begin(), holders.end(), [&](const FaceRef& r) {
-                                    return flat_on(f, r) && outward_turn(f, r) != Sign::Negative;
-                                  }))
+                                : std::any_of(holders.begin(), holders.end(), upper))
           continue;
       }
       if (!in || c.distance < nearest) in = c.facet, nearest = c.distance;
@@ -531,10 +632,6 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
   }
   const double tol = options.relative_tolerance;
   SegmentIndex seg_index;
-  // Rounded input: the input vertices used by the polygons, by mesh vertex, and which
-  // polygons have which edges and vertices (within_rounding).
-  const double u_coord = options.coordinate_uncertainty;
-  const double reach = 2 * u_coord;
   using Edge = std::pair<std::uint32_t, std::uint32_t>;  // input ids, first < second
   std::vector<Edge> edges;                                // in first-seen order
   for (const PlcFacet& f : domain.facets)
@@ -548,98 +645,11 @@ DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& to
           edges.push_back({std::min(u, v), std::max(u, v)});
       }
     }
-  // The vertices on each edge within the rounding: (vertex, edge index), then those of
-  // vertices near one edge only.
-  std::vector<std::pair<std::uint32_t, std::size_t>> rounded;
-  std::vector<std::int64_t> input_of(u_coord > 0 ? mesh.points.size() : 0, -1);
-  if (u_coord > 0) {
-    std::vector<std::pair<Edge, std::uint32_t>> edge_polys;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> poly_vertices;
-    std::uint32_t id = 0;
-    for (const PlcFacet& f : domain.facets)
-      for (const auto& poly : f.polygons) {
-        for (std::size_t i = 0; i < poly.size(); ++i) {
-          const std::uint32_t x = poly[i], y = poly[(i + 1) % poly.size()];
-          if (x >= domain.points.size() || y >= domain.points.size()) continue;
-          if (m.mesh_vertex[x]) input_of[*m.mesh_vertex[x]] = x;
-          poly_vertices.push_back({id, x});
-          if (poly.size() >= 3) edge_polys.push_back({{std::min(x, y), std::max(x, y)}, id});
-        }
-        ++id;
-      }
-    std::sort(edge_polys.begin(), edge_polys.end());
-    std::sort(poly_vertices.begin(), poly_vertices.end());
-    for (std::size_t ei = 0; ei < edges.size(); ++ei) {
-      const Edge& e = edges[ei];
-      const Point& a = domain.points[e.first];
-      const Point& b = domain.points[e.second];
-      const Box box{{std::min(a[0], b[0]) - reach, std::min(a[1], b[1]) - reach,
-                     std::min(a[2], b[2]) - reach},
-                    {std::max(a[0], b[0]) + reach, std::max(a[1], b[1]) + reach,
-                     std::max(a[2], b[2]) + reach}};
-      std::vector<std::uint32_t> found;
-      grid.query(box, [&](std::uint32_t mv, const Point&) {
-        if (input_of[mv] >= 0) found.push_back(static_cast<std::uint32_t>(input_of[mv]));
-      });
-      std::sort(found.begin(), found.end());
-      found.erase(std::unique(found.begin(), found.end()), found.end());
-      for (const std::uint32_t w : found) {
-        if (w == e.first || w == e.second || exactly_collinear(a, b, domain.points[w]) ||
-            !within_rounding(a, b, domain.points[w], reach))
-          continue;
-        bool with_edge = false;
-        auto it = std::lower_bound(edge_polys.begin(), edge_polys.end(), std::pair{e, 0u});
-        for (; it != edge_polys.end() && it->first == e && !with_edge; ++it)
-          with_edge = std::binary_search(poly_vertices.begin(), poly_vertices.end(),
-                                         std::pair{it->second, w});
-        if (!with_edge) rounded.push_back({w, ei});
-      }
-    }
-    std::sort(rounded.begin(), rounded.end());
-  }
-  std::vector<std::vector<std::uint32_t>> pivots(edges.size());
-  for (std::size_t i = 0; i < rounded.size();) {
-    std::size_t j = i;
-    while (j < rounded.size() && rounded[j].first == rounded[i].first) ++j;
-    if (j == i + 1) pivots[rounded[i].second].push_back(rounded[i].first);
-    i = j;
-  }
-  for (std::size_t ei = 0; ei < edges.size(); ++ei) {
-    const std::uint32_t u = edges[ei].first, v = edges[ei].second;
-    std::vector<std::uint32_t>& p = pivots[ei];
-    if (!p.empty()) {
-      // With a vertex on the edge within the rounding, the mesh holds the straight pieces
-      // between every vertex on it: the exact ones are pivots too.
-      const Point& a = domain.points[u];
-      const Point& b = domain.points[v];
-      Box box{a, a};
-      for (int c = 0; c < 3; ++c) {
-        box.lo[c] = std::min(a[c], b[c]);
-        box.hi[c] = std::max(a[c], b[c]);
-      }
-      grid.query(box, [&](std::uint32_t mv, const Point& q) {
-        if (input_of[mv] < 0) return;
-        const auto w = static_cast<std::uint32_t>(input_of[mv]);
-        if (w != u && w != v && exactly_collinear(a, b, q) &&
-            signs::dot(q, a, b, a) == Sign::Positive && signs::dot(q, b, a, b) == Sign::Positive)
-          p.push_back(w);
-      });
-      std::sort(p.begin(), p.end());
-      p.erase(std::unique(p.begin(), p.end()), p.end());
-      // From u (the smaller id) to v along the dominant coordinate, ties by id, as pdr mesh.
-      int k = 0;
-      for (int j = 1; j < 3; ++j)
-        if (std::fabs(b[j] - a[j]) > std::fabs(b[k] - a[k])) k = j;
-      const bool up = a[k] < b[k];
-      std::sort(p.begin(), p.end(), [&](std::uint32_t x, std::uint32_t y) {
-        const double px = domain.points[x][k], py = domain.points[y][k];
-        if (px != py) return up ? px < py : px > py;
-        return x < y;
-      });
-    }
-    SegmentMap sm = map_segment(u, v, p, m, mesh, grid, tol);
-    m.segments.push_back(std::move(sm));
-  }
+  const std::vector<std::vector<std::uint32_t>> pivots =
+      edge_pivots(domain, edges, m, grid, mesh.points.size(), options.coordinate_uncertainty);
+  for (std::size_t ei = 0; ei < edges.size(); ++ei)
+    m.segments.push_back(
+        map_segment(edges[ei].first, edges[ei].second, pivots[ei], m, mesh, grid, tol));
   std::vector<std::uint8_t> dropped_vertex(domain.points.size(), 0);
   for (const std::uint32_t v : options.dropped_vertices)
     if (v < dropped_vertex.size()) dropped_vertex[v] = 1;
