@@ -191,6 +191,34 @@ TEST(Conformity, SliverAcrossANearlyFlatFoldIsNotInTheFacet) {
   EXPECT_TRUE(without.contains("conformity.facets") && without.contains("conformity.volume"));
 }
 
+// A domain whose facets are one polygon each.
+Plc domain_of(std::vector<Point> points,
+              const std::vector<std::vector<std::uint32_t>>& facets) {
+  Plc d;
+  d.points = std::move(points);
+  for (const auto& f : facets) {
+    PlcFacet g;
+    g.polygons.push_back(f);
+    d.facets.push_back(g);
+  }
+  return d;
+}
+
+// The tets, each positively oriented (two vertices swapped where the exact orient3d says
+// negative).
+std::vector<Tet> positive(const std::vector<Point>& p, std::vector<Tet> tets) {
+  for (Tet& t : tets)
+    if (exact::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) == Sign::Negative)
+      std::swap(t[0], t[1]);
+  return tets;
+}
+
+void expect_valid_and_conforming(const Report& r) {
+  for (const char* id : {"validity.orientation", "validity.overlap", "conformity.vertices",
+                         "conformity.segments", "conformity.facets", "conformity.volume"})
+    EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
+}
+
 // A pyramid over a square base given as one facet ABCD, D raised 1e-10 (coplanar only
 // within the tolerance), meshed with a flat tet ABCQ on the base: Q lies 1e-11 above
 // ABC's plane, so all four corners are within the tolerance of the facet and so are the
@@ -200,30 +228,15 @@ TEST(Conformity, SliverAcrossANearlyFlatFoldIsNotInTheFacet) {
 // twice, as pdr's own meshes of a scanned model with 6-digit coordinates were reported).
 // (The mesh is no Delaunay one: only conformity is asked of it.)
 TEST(Conformity, FacesOfAFlatTetOnAToleranceFacetAreNotSubfacets) {
-  Plc d;
-  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1}, {0.6, 0.3, 1e-11}};
-  for (const std::vector<std::uint32_t>& f : std::vector<std::vector<std::uint32_t>>{
-           {0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}) {
-    PlcFacet g;
-    g.polygons.push_back(f);
-    d.facets.push_back(g);
-  }
+  const Plc d = domain_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1}},
+                          {{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
   MeshData m;
   m.points = d.points;
-  d.points.pop_back();  // Q is the mesh's, not the domain's
-  const auto orient = [&](Tet t) {
-    const auto& p = m.points;
-    if (exact::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) == Sign::Negative)
-      std::swap(t[0], t[1]);
-    return t;
-  };
-  for (const Tet& t : std::vector<Tet>{
-           {0, 1, 2, 5}, {0, 1, 5, 4}, {1, 2, 5, 4}, {2, 0, 5, 4}, {0, 2, 3, 4}})
-    m.tets.push_back(orient(t));
+  m.points.push_back({0.6, 0.3, 1e-11});  // Q is the mesh's, not the domain's
+  m.tets = positive(m.points,
+                    {{0, 1, 2, 5}, {0, 1, 5, 4}, {1, 2, 5, 4}, {2, 0, 5, 4}, {0, 2, 3, 4}});
   const Report r = run(m, d);
-  for (const char* id : {"validity.orientation", "validity.overlap", "conformity.vertices",
-                         "conformity.segments", "conformity.facets", "conformity.volume"})
-    EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
+  expect_valid_and_conforming(r);
   EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 2u + 4u);
   EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
 }
@@ -236,31 +249,17 @@ TEST(Conformity, FacesOfAFlatTetOnAToleranceFacetAreNotSubfacets) {
 // lower side count (its outward normal there points down the chart's axis), its upper
 // ones not (they were counted too: the base covered about twice).
 TEST(Conformity, AFlatTetOnAToleranceFacetBetweenTwoRegionsCoversItOnce) {
-  Plc d;
-  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1}, {0.5, 0.5, -1}};
-  for (const std::vector<std::uint32_t>& f : std::vector<std::vector<std::uint32_t>>{
-           {0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4},
-           {0, 1, 5}, {1, 2, 5}, {2, 3, 5}, {3, 0, 5}}) {
-    PlcFacet g;
-    g.polygons.push_back(f);
-    d.facets.push_back(g);
-  }
+  const Plc d = domain_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1},
+                           {0.5, 0.5, -1}},
+                          {{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 1, 5},
+                           {1, 2, 5}, {2, 3, 5}, {3, 0, 5}});
   MeshData m;
   m.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-10}, {0.5, 0.5, 1}, {0.6, 0.3, 1e-11},
               {0.5, 0.5, -1}};
-  const auto orient = [&](Tet t) {
-    const auto& p = m.points;
-    if (exact::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) == Sign::Negative)
-      std::swap(t[0], t[1]);
-    return t;
-  };
-  for (const Tet& t : std::vector<Tet>{{0, 1, 2, 5}, {0, 1, 5, 4}, {1, 2, 5, 4}, {2, 0, 5, 4},
-                                       {0, 2, 3, 4}, {0, 1, 2, 6}, {0, 2, 3, 6}})
-    m.tets.push_back(orient(t));
+  m.tets = positive(m.points, {{0, 1, 2, 5}, {0, 1, 5, 4}, {1, 2, 5, 4}, {2, 0, 5, 4},
+                               {0, 2, 3, 4}, {0, 1, 2, 6}, {0, 2, 3, 6}});
   const Report r = run(m, d);
-  for (const char* id : {"validity.orientation", "validity.overlap", "conformity.vertices",
-                         "conformity.segments", "conformity.facets", "conformity.volume"})
-    EXPECT_EQ(result(r, id).status, Status::Pass) << id << "\n" << to_text(r);
+  expect_valid_and_conforming(r);
   EXPECT_EQ(count(r, "conformity.facets", "subfacets"), 2u + 8u);
   EXPECT_GT(count(r, "conformity.facets", "tolerance_vertices"), 0u);
   // A mesh that lists its faces says which layer is the facet's: here the upper one (ABQ,
