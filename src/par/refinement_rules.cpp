@@ -66,7 +66,6 @@ std::optional<std::array<VertexId, 2>> RefinementRules::encroached_subsegment(
     const Submesh& s, std::initializer_list<const std::vector<TetId>*> tets,
     const Point& p) const {
   const TetStore& st = s.store();
-  const auto pts = s.points();
   for (const auto* list : tets)
     for (const TetId t : *list) {
       if (st.is_ghost(t) || st.is_proxy(t)) continue;
