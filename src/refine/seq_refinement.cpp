@@ -429,20 +429,36 @@ class Refiner {
     return true;
   }
 
-  // Outside the theory: p's cavity into cav_, given up at the first tet that shows an
-  // element of D that p encroaches or the cavity would take out of T (`hit`; else the
-  // whole cavity's first such element, or none); false when p is a vertex.
-  bool plan_scanned(const Point& p, TetId hint, bool& outside,
-                    std::optional<ClosureScan::Hit>& hit) {
-    const Location loc = m_.dt.locate(p, hint);
-    if (loc.kind == Location::Kind::OnVertex) return false;
-    outside = loc.kind == Location::Kind::OutsideHull || !m_.is_inside(loc.tet);
+  // Outside the theory: t's circumcenter p's cavity into cav_, given up at the first tet
+  // that shows an element of D that p encroaches or the cavity would take out of T (`hit`;
+  // else the whole cavity's first such element, or none); false when p is a vertex. The
+  // search grows from t itself when t conflicts with p (it does but for rounding): a
+  // sliver's circumcenter can lie far outside, where the tets around p are many and fine,
+  // and the nearest subfacet the cavity crosses is the one next to t (a crumpled top's
+  // layers made cavities of 30,000 tets and more, built from p, for each refused tet).
+  // Then no hit means no conflict tet across a subfacet from t, so p is outside Ω exactly
+  // when a conflict tet is (only a non-conforming T can have one).
+  bool plan_scanned(const Point& p, TetId t, bool& outside, std::optional<ClosureScan::Hit>& hit) {
+    const TetStore& s = m_.dt.store();
+    const VertexId* tv = s.vertices(t);
+    const bool from_t = std::none_of(tv, tv + 4, [&](VertexId v) { return pt(v) == p; }) &&
+                        in_conflict(s, m_.dt.points(), t, p);
+    TetId seed = t;
+    if (!from_t) {
+      const Location loc = m_.dt.locate(p, t);
+      if (loc.kind == Location::Kind::OnVertex) return false;
+      outside = loc.kind == Location::Kind::OutsideHull || !m_.is_inside(loc.tet);
+      seed = loc.tet;
+    }
     hit.reset();
-    const bool whole = m_.dt.build_cavity_until(p, loc.tet, cav_, [&](TetId from, int f, TetId u) {
+    const bool whole = m_.dt.build_cavity_until(p, seed, cav_, [&](TetId from, int f, TetId u) {
       hit = scan_.joins(m_, from, f, u, p);
       return hit.has_value();
     });
     if (whole) hit = scan_.first(m_, cav_, p, /*conflict_seen=*/true);
+    if (from_t && whole && !hit)
+      outside = std::any_of(cav_.conflict.begin(), cav_.conflict.end(),
+                            [&](TetId u) { return s.is_ghost(u) || !m_.is_inside(u); });
     return true;
   }
 

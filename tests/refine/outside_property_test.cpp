@@ -278,10 +278,12 @@ TEST(OutsideProperty, GeneratedProfilesHaveCornersOutside90To270) {
 
 // Replays of tests/regress/outside-*.poly and outside-*.off, one test each; a known open bug
 // is registered DISABLED_ with the bug named in its file.
-const std::vector<std::string> kKnownBugs = {"outside-crumpled-top-seed-41-edge-cascade.poly"};
+const std::vector<std::string> kKnownBugs = {};
 // Replays of more than about ten seconds (tests/refine/CMakeLists.txt runs them, labelled
-// slow): a crumpled top whose folds make 560K tets of surface refinement (19 s).
-const std::vector<std::string> kSlow = {"outside-crumpled-top-split-not-star.off"};
+// slow): crumpled tops whose folds make 560K tets (19 s) and 1.4M tets (about 35 s) of
+// surface refinement.
+const std::vector<std::string> kSlow = {"outside-crumpled-top-split-not-star.off",
+                                        "outside-crumpled-top-seed-41-edge-cascade.poly"};
 
 // Walls at sharp dihedrals around one axis: the repairs of subfacets missing from T took
 // each other's subfacets out of T in turn, down towards the axis (60,000 vertices and an
