@@ -100,6 +100,7 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
       {"rounds", s.rounds},
       {"fetches_served", s.fetches_served},
       {"fetches_refused", s.refused},
+      {"fetches_rejected", s.fetches_rejected},
       {"tets_migrated", s.tets_sent},
       {"queued_tets_gone", s.gone},
       {"local_while_waiting", s.local_while_waiting},

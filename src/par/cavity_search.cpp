@@ -57,10 +57,12 @@ const RootCavity& CavitySearch::root_cavity(const Submesh& s, const Point& p, Te
   return out;
 }
 
-std::vector<TetId> CavitySearch::fetch_set(const Submesh& s, const Point& p,
-                                           std::span<const Gid> wanted, bool walk) {
+CavitySearch::FetchSet CavitySearch::fetch_set(const Submesh& s, const Point& p,
+                                               std::span<const Gid> wanted, bool walk,
+                                               const Reject& reject) {
   const TetStore& st = s.store();
-  std::vector<TetId> out;
+  FetchSet result;
+  std::vector<TetId>& out = result.tets;
   std::unordered_set<TetId> taken;
   const auto add = [&](TetId t) {
     if (!st.is_proxy(t) && taken.insert(t).second) out.push_back(t);
@@ -74,11 +76,20 @@ std::vector<TetId> CavitySearch::fetch_set(const Submesh& s, const Point& p,
     }
     add(t);
     if (!in_conflict(st, s.points(), t, p)) continue;
-    builder_.build(st, s.points(), p, t, part_);
+    if (reject) {
+      if (!builder_.build_until(st, s.points(), p, t, part_,
+                                [&](TetId, int, TetId u) { return reject(u); })) {
+        result.tets.clear();
+        result.rejected = true;
+        return result;
+      }
+    } else {
+      builder_.build(st, s.points(), p, t, part_);
+    }
     for (const TetId u : part_.conflict) add(u);
     for (const TetId u : part_.ring) add(u);
   }
-  return out;
+  return result;
 }
 
 }  // namespace pdr::par

@@ -52,9 +52,15 @@ class CavitySearch {
                                 bool hint_conflicts = false, const Reject& reject = {});
   // The tets of s to migrate to the root for the requested tets `wanted` (those s holds;
   // the others are skipped: the caller redirects them), each once; for a walk, the tet
-  // where the walk stopped comes first (the root goes on from it).
-  std::vector<TetId> fetch_set(const Submesh& s, const Point& p, std::span<const Gid> wanted,
-                               bool walk);
+  // where the walk stopped comes first (the root goes on from it). `reject`, when given,
+  // is asked about each conflict tet grown here as it joins, as in root_cavity(); true
+  // stops the search: `rejected`, and no tets.
+  struct FetchSet {
+    std::vector<TetId> tets;
+    bool rejected = false;
+  };
+  FetchSet fetch_set(const Submesh& s, const Point& p, std::span<const Gid> wanted, bool walk,
+                     const Reject& reject = {});
 
  private:
   WalkRng rng_;

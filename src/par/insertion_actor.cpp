@@ -11,7 +11,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-enum class Type : std::uint8_t { Fetch = 1, Tets = 2, Refuse = 3, Relink = 4, Point = 5 };
+enum class Type : std::uint8_t { Fetch = 1, Tets = 2, Refuse = 3, Relink = 4, Point = 5, Reject = 6 };
 
 Bytes migration_message(std::uint64_t search, bool walk, const Migration& m) {
   WireWriter w;
@@ -26,6 +26,7 @@ InsertionStats& operator+=(InsertionStats& a, const InsertionStats& b) {
   a.commits += b.commits, a.rounds += b.rounds, a.setbacks += b.setbacks;
   a.duplicates += b.duplicates, a.fetches_served += b.fetches_served, a.refused += b.refused;
   a.tets_sent += b.tets_sent, a.points_passed += b.points_passed, a.deferred += b.deferred;
+  a.fetches_rejected += b.fetches_rejected;
   a.gone += b.gone, a.deferred_early += b.deferred_early;
   a.local_while_waiting += b.local_while_waiting, a.splits += b.splits;
   a.facet_points += b.facet_points;
@@ -94,7 +95,7 @@ bool InsertionActor::step() {
       [&](int from, std::span<const std::byte> m) {
         const bool waiting_now = waiting();
         const auto kind = m.empty() ? Type{} : static_cast<Type>(std::to_integer<std::uint8_t>(m[0]));
-        const bool reply = kind == Type::Tets || kind == Type::Refuse;
+        const bool reply = kind == Type::Tets || kind == Type::Refuse || kind == Type::Reject;
         const auto h0 = Clock::now();
         receive(from, m);
         const double d = since(h0);
@@ -172,7 +173,7 @@ bool InsertionActor::local_step(const Waiting& w) {
   const RootCavity& rc = search_.root_cavity(sub_, p, from, tet_step, reject(p, tet_step));
   if (rc.kind == RootCavity::Kind::Rejected) {
     ++stats_.deferred_early;
-    rules_->count_early_deferral();
+    rules_->count_early_deferral(early_reason_);
     defer(w);
     return true;
   }
@@ -231,8 +232,20 @@ void InsertionActor::defer(const Waiting& w) {
 }
 
 CavitySearch::Reject InsertionActor::reject(const Point& p, bool tet_step) {
-  if (!tet_step || !rules_->defers_early()) return {};
-  return [this, p](TetId u) { return rules_->defers_at(sub_, u, p); };
+  if (!tet_step || rules_ == nullptr || !rules_->defers_early()) return {};
+  return [this, p](TetId u) { return (early_reason_ = rules_->defers_at(sub_, u, p)) != 0; };
+}
+
+void InsertionActor::defer_early(std::uint8_t reason) {
+  const bool gone = sub_.find_tet(s_.w.tet) == kNoTet;
+  finish();
+  if (gone) {
+    ++stats_.gone;
+  } else {
+    ++stats_.deferred_early;
+    rules_->count_early_deferral(reason);
+    defer(s_.w);
+  }
 }
 
 void InsertionActor::requeue_origin(const Waiting& w) {
@@ -318,15 +331,7 @@ void InsertionActor::round() {
       search_.root_cavity(sub_, s_.w.p, hint, tet_step, reject(s_.w.p, tet_step));
   if (rc.kind == RootCavity::Kind::Rejected) {
     // As a complete cavity's Defer, unless the tet has left (its holder steps it).
-    const bool gone = sub_.find_tet(s_.w.tet) == kNoTet;
-    finish();
-    if (gone) {
-      ++stats_.gone;
-    } else {
-      ++stats_.deferred_early;
-      rules_->count_early_deferral();
-      defer(s_.w);
-    }
+    defer_early(early_reason_);
     return;
   }
   if (rc.kind == RootCavity::Kind::OnVertex) {
@@ -366,11 +371,15 @@ void InsertionActor::round() {
   }
   s_.walk = rc.walk;
   s_.refused = false;
+  s_.rejected = 0;
   s_.outstanding = static_cast<int>(rc.fetch.size());
   search_distributed_ = search_distributed_ || !rc.fetch.empty();
+  // The submeshes asked may defer the step at a tet of theirs, as root_cavity() here.
+  const bool rejectable = tet_step && rules_->defers_early();
   for (const auto& [owner, sides] : rc.fetch) {
     WireWriter m;
     m.put(Type::Fetch).put(sub_.id()).put(s_.id).put(s_.w.p).put<std::uint8_t>(rc.walk);
+    m.put<std::uint8_t>(rejectable);
     m.put_vector(sides);
     send(static_cast<int>(owner), m.take());
   }
@@ -396,10 +405,13 @@ void InsertionActor::setback() {
   end_ = End::Setback;
 }
 
-void InsertionActor::reply_in(bool refused) {
+void InsertionActor::reply_in(bool refused, std::uint8_t rejected) {
   s_.refused = s_.refused || refused;
+  if (s_.rejected == 0) s_.rejected = rejected;
   if (--s_.outstanding > 0) return;
-  if (s_.refused)
+  if (s_.rejected != 0)
+    defer_early(s_.rejected);  // a deferral is final: no retry would change it
+  else if (s_.refused)
     setback();
   else
     round();
@@ -411,6 +423,11 @@ void InsertionActor::receive(int, std::span<const std::byte> bytes) {
     case Type::Fetch: serve_fetch(r); break;
     case Type::Tets: take_tets(r); break;
     case Type::Refuse: reply_in(true); break;
+    case Type::Reject: {
+      r.get<std::uint64_t>();  // the search: always the active one
+      reply_in(false, r.get<std::uint8_t>());
+      break;
+    }
     case Type::Relink: {
       std::vector<Relink> onward;  // notices to go on, as relink() readdressed them
       for (Relink n : r.get_vector<Relink>())
@@ -433,6 +450,7 @@ void InsertionActor::serve_fetch(WireReader& r) {
   const auto search = r.get<std::uint64_t>();
   const auto p = r.get<Point>();
   const bool walk = r.get<std::uint8_t>() != 0;
+  const bool rejectable = r.get<std::uint8_t>() != 0;
   const std::vector<Side> sides = r.get_vector<Side>();
   ++stats_.fetches_served;
   std::vector<Gid> wanted;
@@ -443,7 +461,15 @@ void InsertionActor::serve_fetch(WireReader& r) {
   }
   std::vector<TetId> tets;
   if (!refuse) {
-    tets = search_.fetch_set(sub_, p, wanted, walk);
+    CavitySearch::FetchSet f = search_.fetch_set(sub_, p, wanted, walk, reject(p, rejectable));
+    if (f.rejected) {  // the step is deferred whatever else its cavity holds
+      ++stats_.fetches_rejected;
+      WireWriter m;
+      m.put(Type::Reject).put(search).put(early_reason_);
+      send(static_cast<int>(root), m.take());
+      return;
+    }
+    tets = std::move(f.tets);
     refuse = std::any_of(tets.begin(), tets.end(), [&](TetId t) { return locked_.count(t) != 0; });
   }
   if (refuse) {

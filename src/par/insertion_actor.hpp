@@ -63,6 +63,8 @@ namespace pdr::par {
 struct InsertionStats {
   std::uint64_t commits = 0, rounds = 0, setbacks = 0, duplicates = 0;
   std::uint64_t fetches_served = 0, refused = 0, tets_sent = 0, points_passed = 0;
+  std::uint64_t fetches_rejected = 0;  // of the fetches served, those answered with a
+                                       // deferral (StepRules::defers_at, at a tet here)
   std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
                                          // tets that had left when their turn came
   std::uint64_t deferred_early = 0;  // of the deferred, those the rules decided at a tet
@@ -127,6 +129,7 @@ class InsertionActor {
     Gid hint = kNoGid;
     int outstanding = 0;
     bool refused = false;
+    std::uint8_t rejected = 0;  // a reply's deferral reason (StepRules::defers_at)
     bool walk = false;
   };
 
@@ -144,7 +147,12 @@ class InsertionActor {
   void receive(int from, std::span<const std::byte> m);
   void serve_fetch(WireReader& r);
   void take_tets(WireReader& r);
-  void reply_in(bool refused);
+  // A reply to the active search: tets (nothing to note), a refusal (a locked tet:
+  // setback) or a deferral with its reason (the search ends once every reply is in).
+  void reply_in(bool refused, std::uint8_t rejected = 0);
+  // The active tet's step is deferred for `reason` (StepRules::defers_at) before its
+  // cavity was whole, unless its tet has left.
+  void defer_early(std::uint8_t reason);
   void round();  // one round of the active search
   void setback();
   // A step deferred (a tet's: marked, counted) or dropped (a step on ∂Ω: its origin
@@ -153,6 +161,7 @@ class InsertionActor {
   // The early test of a tet's step at p (StepRules::defers_at); none for other steps, or
   // when the rules never defer early.
   CavitySearch::Reject reject(const Point& p, bool tet_step);
+  std::uint8_t early_reason_ = 0;  // reject()'s last verdict
   void finish();
   TetId any_real_tet();
   void send(int to, Bytes b);

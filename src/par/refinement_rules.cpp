@@ -117,28 +117,30 @@ Verdict RefinementRules::refine_element(const Submesh& s, std::array<VertexId, 3
   return out;
 }
 
-bool RefinementRules::defers_at(const Submesh& s, TetId u, const Point& p) {
+namespace {
+enum EarlyReason : std::uint8_t { kOutside = 1, kSubsegment = 2, kSubfacet = 3 };
+}  // namespace
+
+std::uint8_t RefinementRules::defers_at(const Submesh& s, TetId u, const Point& p) {
   const TetStore& st = s.store();
-  if (st.is_ghost(u) || !s.inside(u)) {
-    early_ = &deferred_.outside;
-    return true;
-  }
+  if (st.is_ghost(u) || !s.inside(u)) return kOutside;
   const VertexId* v = st.vertices(u);
-  if (!may_touch_d(s, v)) return false;
-  if (encroached_edge(s, v, p)) {
-    early_ = &deferred_.subsegment;
-    return true;
-  }
+  if (!may_touch_d(s, v)) return 0;
+  if (encroached_edge(s, v, p)) return kSubsegment;
   const auto pts = s.points();
   for (int f = 0; f < 4; ++f) {
     const auto& fv = tables::kFaceVertex[f];
     if (subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]) &&
-        in_equatorial_ball(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], p) != Sign::Negative) {
-      early_ = &deferred_.subfacet;
-      return true;
-    }
+        in_equatorial_ball(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], p) != Sign::Negative)
+      return kSubfacet;
   }
-  return false;
+  return 0;
+}
+
+void RefinementRules::count_early_deferral(std::uint8_t reason) {
+  if (reason == kOutside) ++deferred_.outside;
+  if (reason == kSubsegment) ++deferred_.subsegment;
+  if (reason == kSubfacet) ++deferred_.subfacet;
 }
 
 Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {

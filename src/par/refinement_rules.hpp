@@ -105,11 +105,9 @@ class RefinementRules final : public StepRules {
   // reason is that of the first such tet the search meets (accept() takes Fig. 2's order
   // over the whole closure), counted by count_early_deferral().
   bool defers_early() const override { return !surface_steps_enabled_; }
-  bool defers_at(const Submesh& s, TetId u, const Point& p) override;
-  void count_early_deferral() override {
-    if (early_ != nullptr) ++*early_;
-    early_ = nullptr;
-  }
+  // Its reasons: 1 outside Ω, 2 an encroached subsegment, 3 an encroached subfacet.
+  std::uint8_t defers_at(const Submesh& s, TetId u, const Point& p) override;
+  void count_early_deferral(std::uint8_t reason) override;
   Verdict accept_surface(const Submesh& s, const Cavity& c, Gid a, Gid b, Gid cc) override;
   VertexId commit(Submesh& s, const Cavity& c) override;
   // A committed circumcenter is off ∂Ω (a step that would put one on it is deferred).
@@ -174,7 +172,6 @@ class RefinementRules final : public StepRules {
   DeferCounts deferred_;
   std::vector<std::pair<VertexId, VertexId>> kept_;  // accept(): the boundary's edges
   const bool surface_steps_enabled_;
-  std::uint64_t* early_ = nullptr;  // defers_at(): the counter of its last reason
   std::set<Key> refused_;
   // accept_surface() -> commit(): the step's change of D (local vertex ids). One rules
   // object serves every actor of a rank: the actor calls commit() right after the accept

@@ -50,12 +50,15 @@ class StepRules {
   // false: the search asks nothing per tet.
   virtual bool defers_early() const { return false; }
   // Whether tet u, as it joins the conflict region of a tet's step at point p, already
-  // decides accept() (asked only when defers_early()): true only when accept() would then
-  // Defer whatever else the cavity holds, so that the search stops there and the step is
-  // deferred without building (and migrating) the rest of a far circumcenter's cavity.
-  virtual bool defers_at(const Submesh&, TetId, const Point&) { return false; }
-  // The step that defers_at() stopped is deferred: count it by the reason it gave.
-  virtual void count_early_deferral() {}
+  // decides accept() (asked only when defers_early()): a reason other than 0 only when
+  // accept() would then Defer whatever else the cavity holds, so that the search stops
+  // there and the step is deferred without building (and migrating) the rest of a far
+  // circumcenter's cavity. The submesh holding u may be the step's root or one asked for
+  // the tets behind the root's proxies: u's verdict reads only u.
+  virtual std::uint8_t defers_at(const Submesh&, TetId, const Point&) { return 0; }
+  // A step that defers_at() stopped (at its root or at another submesh) is deferred:
+  // count it by the reason defers_at() gave.
+  virtual void count_early_deferral(std::uint8_t) {}
   // Commits the cavity that accept() or accept_surface() just accepted: the new vertex
   // and tets with their inside flags (and D's labels, for a step on ∂Ω). Returns the
   // vertex.

@@ -69,7 +69,7 @@ Cavity search(World& w, ActorId root, const Point& p, TetId hint, SearchStats& s
       }
       std::vector<Gid> ask;
       for (const Side& x : sides) ask.push_back(x.tet);
-      const std::vector<TetId> tets = CavitySearch().fetch_set(w.subs[at], p, ask, rc.walk);
+      const std::vector<TetId> tets = CavitySearch().fetch_set(w.subs[at], p, ask, rc.walk).tets;
       bool waited = false;
       for (const Side& x : sides) {
         if (w.subs[at].find_tet(x.tet) != kNoTet) continue;

@@ -245,6 +245,7 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed, bool
     out.stats.facet_points += a->stats().facet_points;
     out.stats.deferred += a->stats().deferred;
     out.stats.deferred_early += a->stats().deferred_early;
+    out.stats.fetches_rejected += a->stats().fetches_rejected;
     out.stats.setbacks += a->stats().setbacks;
     out.stats.tets_sent += a->stats().tets_sent;
   }
@@ -266,12 +267,15 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed, bool
     }
   }
   std::printf("seed %llu, %d ranks: %llu commits (%llu splits, %llu facet points, %zu refused), "
-              "%llu deferred, %llu setbacks, %llu tets migrated, %llu sim steps\n",
+              "%llu deferred (%llu early, %llu at another rank), %llu setbacks, %llu tets migrated, "
+              "%llu sim steps\n",
               static_cast<unsigned long long>(seed), ranks,
               static_cast<unsigned long long>(out.stats.commits),
               static_cast<unsigned long long>(out.stats.splits),
               static_cast<unsigned long long>(out.stats.facet_points), out.refused.size(),
               static_cast<unsigned long long>(out.stats.deferred),
+              static_cast<unsigned long long>(out.stats.deferred_early),
+              static_cast<unsigned long long>(out.stats.fetches_rejected),
               static_cast<unsigned long long>(out.stats.setbacks),
               static_cast<unsigned long long>(out.stats.tets_sent),
               static_cast<unsigned long long>(steps));
@@ -293,11 +297,16 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
       EXPECT_GT(run.stats.splits, 0u) << "seed " << seed;
       EXPECT_GT(run.stats.facet_points, 0u) << "seed " << seed;
       EXPECT_EQ(run.stats.deferred_early, 0u) << "seed " << seed;  // Fig. 2 needs the closure
+      EXPECT_EQ(run.stats.fetches_rejected, 0u) << "seed " << seed;
     } else {
       // Without steps on ∂Ω every refusal is a deferral, decided at the first conflict tet
       // that shows one (outside Ω, or an element of D it encroaches): the rest of the
-      // cavity is neither built nor fetched. The checks below hold all the same.
+      // cavity is neither built nor fetched, also when that tet is at the rank asked for
+      // the tets behind the root's proxies (fetches_rejected: nothing migrates). The checks
+      // below hold all the same.
       EXPECT_GT(run.stats.deferred_early, 0u) << "seed " << seed;
+      EXPECT_GT(run.stats.fetches_rejected, 0u) << "seed " << seed;
+      EXPECT_LT(run.stats.fetches_rejected, run.stats.deferred_early) << "seed " << seed;
     }
     // The submeshes' tets assembled (through the wire format) are M_o plus the points,
     // every tet with its flag: what inserting the points gives.
