@@ -55,6 +55,13 @@ void check_incidences(const SurfaceMesh& m, SurfaceAudit& out) {
   for (std::uint32_t t = 0; t < m.subfacets().size(); ++t)
     if (m.subfacet(t).alive)
       for (const std::uint32_t v : m.subfacet(t).v) tris[v].push_back(t);
+  std::vector<std::vector<std::uint32_t>> of(m.facets.size());
+  for (std::uint32_t t = 0; t < m.subfacets().size(); ++t)
+    if (m.subfacet(t).alive && m.subfacet(t).facet < of.size()) of[m.subfacet(t).facet].push_back(t);
+  for (std::uint32_t f = 0; f < of.size(); ++f)
+    if (m.facet_subfacets(f) != of[f])
+      out.add("surface.homes: the subfacet list of " + m.facet_name(f) +
+              " differs from the live subfacets of that facet");
   for (std::uint32_t v = 0; v < n; ++v) {
     std::vector<std::uint32_t> a = m.vertex_subsegments(v), b = m.vertex_subfacets(v);
     std::sort(a.begin(), a.end());

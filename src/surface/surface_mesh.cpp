@@ -81,9 +81,9 @@ std::vector<std::uint32_t> SurfaceMesh::chain(std::uint32_t s) const {
 }
 
 std::vector<std::uint32_t> SurfaceMesh::facet_subfacets(std::uint32_t f) const {
-  std::vector<std::uint32_t> out;
-  for (std::uint32_t t = 0; t < subfacets_.size(); ++t)
-    if (subfacets_[t].alive && subfacets_[t].facet == f) out.push_back(t);
+  if (f >= ftris_.size()) return {};
+  std::vector<std::uint32_t> out = ftris_[f];
+  std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -138,6 +138,10 @@ std::uint32_t SurfaceMesh::add_subfacet(const Subfacet& t) {
   }
   subfacets_[id].alive = true;
   for (const std::uint32_t v : t.v) vtris_[v].push_back(id);
+  if (t.facet >= ftris_.size()) ftris_.resize(t.facet + 1);
+  if (id >= fpos_.size()) fpos_.resize(subfacets_.size());
+  fpos_[id] = static_cast<std::uint32_t>(ftris_[t.facet].size());
+  ftris_[t.facet].push_back(id);
   return id;
 }
 
@@ -146,6 +150,11 @@ void SurfaceMesh::kill_subfacet(std::uint32_t t) {
   if (!s.alive) return;
   s.alive = false;
   for (const std::uint32_t v : s.v) erase_value(vtris_[v], t);
+  std::vector<std::uint32_t>& of = ftris_[s.facet];
+  const std::uint32_t i = fpos_[t];
+  of[i] = of.back();
+  fpos_[of[i]] = i;
+  of.pop_back();
   free_.push_back(t);
 }
 

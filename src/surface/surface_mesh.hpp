@@ -136,7 +136,7 @@ class SurfaceMesh {
                                                std::uint32_t w) const;
   // The vertices of segment s in order from its a to its b (follows the chain).
   std::vector<std::uint32_t> chain(std::uint32_t s) const;
-  // The live subfacets of facet f, in increasing id.
+  // The live subfacets of facet f, in increasing id (linear in their number).
   std::vector<std::uint32_t> facet_subfacets(std::uint32_t f) const;
   // "facet 3 (box.poly:40)".
   std::string facet_name(std::uint32_t f) const;
@@ -160,6 +160,11 @@ class SurfaceMesh {
   std::vector<Subfacet> subfacets_;
   std::vector<std::uint32_t> free_;  // dead subfacet slots
   std::vector<std::vector<std::uint32_t>> vsegs_, vtris_;
+  // Per facet its live subfacets (unordered), and per subfacet slot its index there: a
+  // scan of every subfacet per facet made the build of a scanned bust's 100K triangles,
+  // and each walk that left a non-convex facet, linear in the whole surface.
+  std::vector<std::vector<std::uint32_t>> ftris_;
+  std::vector<std::uint32_t> fpos_;
 };
 
 // The index of vertex v in subfacet t (precondition: v is a vertex of t).
