@@ -184,6 +184,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   summary.set("admissible", an.report.admissible);
   const nlohmann::json report = domain::to_json(an.report);
   summary.set("admissibility_violations", report.at("admissibility").at("violations"));
+  summary.set("admissibility_violation_count", report.at("admissibility").at("violation_count"));
   if (const std::string hint = domain::bent_right_angles_hint(an.report); !hint.empty())
     summary.set("admissibility_hint", hint);
   // Angle tests a hair off 90 or 270 degrees, read as right angles (domain/angles.hpp).

@@ -147,6 +147,22 @@ std::string bent_right_angles_hint(const DomainReport& r) {
          "tolerance (--planarity-tolerance) to read them as right";
 }
 
+std::vector<const AngleRecord*> listed_violations(const DomainReport& r) {
+  const auto beyond = [](const AngleRecord& v) {
+    return v.degrees < 90 ? 90 - v.degrees : std::max(0.0, v.degrees - 270);
+  };
+  std::vector<const AngleRecord*> out;
+  for (const AngleRecord& v : r.violations) out.push_back(&v);
+  const std::size_t n = std::min(out.size(), kListedViolations);
+  std::partial_sort(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n), out.end(),
+                    [&](const AngleRecord* a, const AngleRecord* b) {
+                      const double x = beyond(*a), y = beyond(*b);
+                      return x != y ? x > y : a < b;  // ties: in the order found
+                    });
+  out.resize(n);
+  return out;
+}
+
 std::string render_text(const DomainReport& r) {
   std::ostringstream o;
   o << "domain " << (r.source.empty() ? "(unnamed)" : r.source) << "\n";
@@ -196,7 +212,10 @@ std::string render_text(const DomainReport& r) {
   }
   if (!r.violations.empty()) {
     o << "  violations (" << r.violations.size() << "):\n";
-    for (const AngleRecord& v : r.violations) o << "    " << describe(v) << "\n";
+    for (const AngleRecord* v : listed_violations(r)) o << "    " << describe(*v) << "\n";
+    if (r.violations.size() > kListedViolations)
+      o << "    ... and " << r.violations.size() - kListedViolations
+        << " more (the listed ones are the farthest from 90..270 deg)\n";
     if (const std::string hint = bent_right_angles_hint(r); !hint.empty()) o << "    " << hint << "\n";
   }
   if (std::isfinite(r.feature.d))
@@ -247,7 +266,8 @@ nlohmann::json to_json(const DomainReport& r) {
     stats[angle_kind_name(static_cast<AngleKind>(k))] = e;
   }
   json viol = json::array();
-  for (const AngleRecord& v : r.violations) {
+  for (const AngleRecord* p : listed_violations(r)) {
+    const AngleRecord& v = *p;
     json e = {{"kind", angle_kind_name(v.kind)}, {"degrees", v.degrees}, {"in_facet", v.in_facet}};
     if (v.vertex >= 0) e["vertex"] = {{"id", v.vertex}, {"line", v.vertex_line}};
     json segs = json::array();
@@ -263,7 +283,8 @@ nlohmann::json to_json(const DomainReport& r) {
   j["admissibility"] = {{"admissible", r.admissible},
                         {"right_within_tolerance", r.right_within_tolerance},
                         {"angles", stats},
-                        {"violations", viol}};
+                        {"violations", viol},
+                        {"violation_count", r.violations.size()}};
   json d = {{"d", nullptr}, {"min_distance", nullptr}};
   if (std::isfinite(r.feature.d)) {
     d["d"] = r.feature.d;

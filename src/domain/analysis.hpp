@@ -65,6 +65,14 @@ DomainReport make_report(const PlcDomain& dom, const Admissibility& adm, const F
 // planarity tolerance's reading, domain/angles.hpp): what to do, in words; else empty.
 std::string bent_right_angles_hint(const DomainReport& r);
 
+// The violations a report lists (render_text, to_json "violations"): the kListedViolations
+// farthest from the admissible range 90..270 degrees, in that order (ties in the order
+// found); to_json's "violation_count" counts them all. A triangulated surface violates at
+// every corner of every triangle: listing a scanned bust's 300,000 made its summary 37 MB
+// and took longer than its analysis.
+inline constexpr std::size_t kListedViolations = 100;
+std::vector<const AngleRecord*> listed_violations(const DomainReport& r);
+
 // Multi-line human-readable summary, ending with a newline.
 std::string render_text(const DomainReport& r);
 nlohmann::json to_json(const DomainReport& r);

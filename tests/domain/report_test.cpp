@@ -1,11 +1,13 @@
 // The domain report (paper §1.1, §2.1) as text and JSON.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "domain/analysis.hpp"
 #include "io/error.hpp"
+#include "support/outside_fixtures.hpp"
 #include "support/plc_fixtures.hpp"
 
 namespace pdr::domain::test {
@@ -25,6 +27,30 @@ TEST(PlcReport, TextAndJsonCarryCountsViolationsAndD) {
   EXPECT_EQ(j["admissibility"]["violations"].size(), 7u);
   EXPECT_GT(j["feature_size"]["d"].get<double>(), 0);
   EXPECT_EQ(j["bounding_box"]["max"][0], 10.0);
+}
+
+// A torus of triangle facets violates at every corner of every triangle: the report lists
+// the kListedViolations angles farthest from 90..270 degrees and counts them all.
+TEST(PlcReport, ListsTheViolationsFarthestFromTheRangeAndCountsThemAll) {
+  const DomainReport r = analyze_domain(torus_of_triangles(16, 10, 0.35));
+  ASSERT_GT(r.violations.size(), kListedViolations);
+  const auto beyond = [](double deg) { return deg < 90 ? 90 - deg : std::max(0.0, deg - 270); };
+  const std::vector<const AngleRecord*> listed = listed_violations(r);
+  ASSERT_EQ(listed.size(), kListedViolations);
+  double least = 1e9;
+  for (const AngleRecord* v : listed) least = std::min(least, beyond(v->degrees));
+  for (const AngleRecord& v : r.violations) {
+    if (std::find(listed.begin(), listed.end(), &v) == listed.end()) {
+      EXPECT_LE(beyond(v.degrees), least) << v.degrees;
+    }
+  }
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j["admissibility"]["violation_count"], r.violations.size());
+  ASSERT_EQ(j["admissibility"]["violations"].size(), kListedViolations);
+  EXPECT_EQ(j["admissibility"]["violations"][0]["degrees"].get<double>(), listed[0]->degrees);
+  EXPECT_NE(render_text(r).find("... and " + std::to_string(r.violations.size() - kListedViolations) +
+                                " more"),
+            std::string::npos);
 }
 
 TEST(PlcReport, ToleranceFacetsAreListed) {
