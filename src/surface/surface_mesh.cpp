@@ -33,6 +33,9 @@ int edge_index(const Subfacet& t, std::uint32_t u, std::uint32_t w) {
 }
 
 std::optional<std::uint32_t> SurfaceMesh::find_subsegment(std::uint32_t u, std::uint32_t w) const {
+  // The shorter list: an input vertex of a triangulated surface ends six segments or more,
+  // a vertex inside a segment two subsegments.
+  if (vsegs_[w].size() < vsegs_[u].size()) std::swap(u, w);
   for (const std::uint32_t s : vsegs_[u]) {
     const Subsegment& g = subsegments_[s];
     if ((g.v[0] == u && g.v[1] == w) || (g.v[0] == w && g.v[1] == u)) return s;
