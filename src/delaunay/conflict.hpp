@@ -50,4 +50,15 @@ inline bool in_conflict(const TetStore& s, std::span<const Point> pts, TetId t,
   return insphere_sos(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]], p) == Sign::Positive;
 }
 
+// Whether t can seed p's cavity without a walk to p: p is none of t's vertices (the
+// precondition above) and conflicts with t. Then p is no vertex of the triangulation at
+// all, since no other vertex lies strictly inside (or, perturbed, on) a Delaunay tet's
+// circumsphere. A tet's own circumcenter passes but for rounding.
+inline bool seeds_cavity(const TetStore& s, std::span<const Point> pts, TetId t, const Point& p) {
+  const VertexId* v = s.vertices(t);
+  for (int i = 0; i < 4; ++i)
+    if (v[i] < pts.size() && pts[v[i]] == p) return false;
+  return in_conflict(s, pts, t, p);
+}
+
 }  // namespace pdr

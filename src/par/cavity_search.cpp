@@ -1,7 +1,6 @@
 // The two local steps of the distributed cavity search (par/cavity_search.hpp).
 #include "par/cavity_search.hpp"
 
-#include <algorithm>
 #include <unordered_set>
 
 #include "delaunay/conflict.hpp"
@@ -17,12 +16,7 @@ const RootCavity& CavitySearch::root_cavity(const Submesh& s, const Point& p, Te
   out.walk = false;
   const TetStore& st = s.store();
   TetId seed = kNoTet;
-  // In conflict with p, so p is no vertex: strictly inside the circumsphere of a Delaunay
-  // tet there is none.
-  const VertexId* hv = st.vertices(hint);
-  if (hint_conflicts && std::none_of(hv, hv + 4, [&](VertexId v) {
-        return v < s.points().size() && s.points()[v] == p;
-      }) && in_conflict(st, s.points(), hint, p)) {
+  if (hint_conflicts && seeds_cavity(st, s.points(), hint, p)) {
     seed = hint;
   } else {
     const Location loc = locate(st, s.points(), p, hint, rng_);

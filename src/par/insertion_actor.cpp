@@ -172,9 +172,7 @@ bool InsertionActor::local_step(const Waiting& w) {
   const Point p = w.a != kNoGid ? w.p : rules_->point(sub_, t);
   const RootCavity& rc = search_.root_cavity(sub_, p, from, tet_step, reject(p, tet_step));
   if (rc.kind == RootCavity::Kind::Rejected) {
-    ++stats_.deferred_early;
-    rules_->count_early_deferral(early_reason_);
-    defer(w);
+    defer_early(w, early_reason_);
     return true;
   }
   const auto locked = [&](TetId u) { return locked_.count(u) != 0; };
@@ -236,16 +234,19 @@ CavitySearch::Reject InsertionActor::reject(const Point& p, bool tet_step) {
   return [this, p](TetId u) { return (early_reason_ = rules_->defers_at(sub_, u, p)) != 0; };
 }
 
-void InsertionActor::defer_early(std::uint8_t reason) {
+void InsertionActor::defer_early(const Waiting& w, std::uint8_t reason) {
+  ++stats_.deferred_early;
+  rules_->count_early_deferral(reason);
+  defer(w);
+}
+
+void InsertionActor::end_search_deferred(std::uint8_t reason) {
   const bool gone = sub_.find_tet(s_.w.tet) == kNoTet;
   finish();
-  if (gone) {
+  if (gone)
     ++stats_.gone;
-  } else {
-    ++stats_.deferred_early;
-    rules_->count_early_deferral(reason);
-    defer(s_.w);
-  }
+  else
+    defer_early(s_.w, reason);
 }
 
 void InsertionActor::requeue_origin(const Waiting& w) {
@@ -331,7 +332,7 @@ void InsertionActor::round() {
       search_.root_cavity(sub_, s_.w.p, hint, tet_step, reject(s_.w.p, tet_step));
   if (rc.kind == RootCavity::Kind::Rejected) {
     // As a complete cavity's Defer, unless the tet has left (its holder steps it).
-    defer_early(early_reason_);
+    end_search_deferred(early_reason_);
     return;
   }
   if (rc.kind == RootCavity::Kind::OnVertex) {
@@ -410,7 +411,7 @@ void InsertionActor::reply_in(bool refused, std::uint8_t rejected) {
   if (s_.rejected == 0) s_.rejected = rejected;
   if (--s_.outstanding > 0) return;
   if (s_.rejected != 0)
-    defer_early(s_.rejected);  // a deferral is final: no retry would change it
+    end_search_deferred(s_.rejected);  // a deferral is final: no retry would change it
   else if (s_.refused)
     setback();
   else

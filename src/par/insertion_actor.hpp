@@ -150,9 +150,11 @@ class InsertionActor {
   // A reply to the active search: tets (nothing to note), a refusal (a locked tet:
   // setback) or a deferral with its reason (the search ends once every reply is in).
   void reply_in(bool refused, std::uint8_t rejected = 0);
-  // The active tet's step is deferred for `reason` (StepRules::defers_at) before its
-  // cavity was whole, unless its tet has left.
-  void defer_early(std::uint8_t reason);
+  // Step w of a tet is deferred for `reason` (StepRules::defers_at) before its cavity was
+  // whole: counted as such, and marked (defer).
+  void defer_early(const Waiting& w, std::uint8_t reason);
+  // The active search's step is deferred so, unless its tet has left; the search ends.
+  void end_search_deferred(std::uint8_t reason);
   void round();  // one round of the active search
   void setback();
   // A step deferred (a tet's: marked, counted) or dropped (a step on ∂Ω: its origin

@@ -440,9 +440,7 @@ class Refiner {
   // when a conflict tet is (only a non-conforming T can have one).
   bool plan_scanned(const Point& p, TetId t, bool& outside, std::optional<ClosureScan::Hit>& hit) {
     const TetStore& s = m_.dt.store();
-    const VertexId* tv = s.vertices(t);
-    const bool from_t = std::none_of(tv, tv + 4, [&](VertexId v) { return pt(v) == p; }) &&
-                        in_conflict(s, m_.dt.points(), t, p);
+    const bool from_t = seeds_cavity(s, m_.dt.points(), t, p);
     TetId seed = t;
     if (!from_t) {
       const Location loc = m_.dt.locate(p, t);
