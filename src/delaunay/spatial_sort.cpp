@@ -131,6 +131,25 @@ void hilbert_sort(std::span<std::uint32_t> ids, std::span<const Point> pts, cons
   for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<std::uint32_t>(words[i]);
 }
 
+std::vector<std::uint32_t> hilbert_tet_order(const TetStore& s, std::span<const Point> pts,
+                                             std::span<const TetId> tets) {
+  std::vector<Point> centroid(tets.size());
+  std::vector<std::uint32_t> order(tets.size());
+  Point lo{}, hi{};
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const VertexId* v = s.vertices(tets[i]);
+    for (int k = 0; k < 3; ++k) {
+      const double c = (pts[v[0]][k] + pts[v[1]][k] + pts[v[2]][k] + pts[v[3]][k]) / 4;
+      centroid[i][k] = c;
+      lo[k] = i == 0 ? c : std::min(lo[k], c);
+      hi[k] = i == 0 ? c : std::max(hi[k], c);
+    }
+    order[i] = static_cast<std::uint32_t>(i);
+  }
+  hilbert_sort(order, centroid, lo, hi);
+  return order;
+}
+
 std::vector<std::uint32_t> brio_order(std::vector<std::uint32_t> ids,
                                       std::span<const Point> pts, std::uint64_t seed,
                                       std::size_t min_round) {

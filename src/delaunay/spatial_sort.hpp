@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "geom/point.hpp"
+#include "mesh/tet_store.hpp"
 
 namespace pdr {
 
@@ -28,6 +29,14 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, i
 // Sorts ids in place by the Hilbert index of pts[id] over the box [lo, hi].
 void hilbert_sort(std::span<std::uint32_t> ids, std::span<const Point> pts, const Point& lo,
                   const Point& hi);
+
+// The order of the given finite tets along a Hilbert curve through their centroids (over
+// their bounding box): a permutation of 0..tets.size()-1. A work queue taken first in,
+// first out keeps the order in its later generations (the tets each step makes), so
+// consecutive steps touch nearby tets and points; a queue in slot order, which slot reuse
+// scatters over space, fetches each cavity from memory afresh.
+std::vector<std::uint32_t> hilbert_tet_order(const TetStore& s, std::span<const Point> pts,
+                                             std::span<const TetId> tets);
 
 // The BRIO order of the given ids (all of them, each once).
 std::vector<std::uint32_t> brio_order(std::vector<std::uint32_t> ids,
