@@ -365,7 +365,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     // Remarks 1-2: the mesh is DT(V) restricted to the domain, whatever the insertion
     // order (order_check.hpp); rebuilt here in a seeded order unlike the mesher's.
     progress.phase("order check");
-    const OrderCheck oc = check_order_independence(mesh, rebuilt.get(), kOrderCheckSeed);
+    const OrderCheck oc = check_order_independence(mesh, rebuilt.get(), kOrderCheckSeed, 10,
+                                                   true, std::max(1u, args.threads));
     timer.lap("order_check");
     summary.set("order_independence",
                 nlohmann::json{{"seed", oc.seed}, {"tets", oc.tets}, {"missing", oc.missing},

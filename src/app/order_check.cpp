@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "check/parallel.hpp"
 #include "delaunay/bulk.hpp"
 #include "delaunay/delaunay.hpp"
 #include "geom/predicates.hpp"
@@ -103,22 +104,30 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
 
 OrderCheck check_order_independence(const MeshData& mesh, const RebuiltDt& dt,
                                      std::uint64_t seed, std::size_t max_listed,
-                                     bool find_ties) {
+                                     bool find_ties, unsigned threads) {
   OrderCheck r;
   r.seed = seed;
   r.tets = mesh.tets.size();
   r.rebuilt = dt.rebuilt;
   const std::vector<Quad>& all = dt.tets;
+  // Each worker lists the misses of its blocks; sorted after, they are in mesh order.
+  std::vector<std::vector<std::size_t>> misses(std::max(1u, threads));
+  check::parallel_blocks(mesh.tets.size(), threads, 1 << 14,
+                         [&](unsigned w, std::size_t b, std::size_t e) {
+                           for (std::size_t i = b; i < e; ++i) {
+                             const auto& t = mesh.tets[i];
+                             if (!std::binary_search(all.begin(), all.end(),
+                                                     sorted({t[0], t[1], t[2], t[3]})))
+                               misses[w].push_back(i);
+                           }
+                         });
   std::vector<std::size_t> missing;
-  for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
-    const auto& t = mesh.tets[i];
-    const Quad q = sorted({t[0], t[1], t[2], t[3]});
-    if (std::binary_search(all.begin(), all.end(), q)) continue;
-    missing.push_back(i);
-    if (r.first.size() < max_listed) {
-      r.first.push_back(q);
-      r.first_index.push_back(i);
-    }
+  for (const auto& m : misses) missing.insert(missing.end(), m.begin(), m.end());
+  std::sort(missing.begin(), missing.end());
+  for (std::size_t k = 0; k < missing.size() && k < max_listed; ++k) {
+    const auto& t = mesh.tets[missing[k]];
+    r.first.push_back(sorted({t[0], t[1], t[2], t[3]}));
+    r.first_index.push_back(missing[k]);
   }
   r.missing = missing.size();
   if (find_ties && r.rebuilt && !missing.empty()) {
@@ -154,7 +163,8 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
   const check::CheckResult* empty = report.find("delaunay.empty_sphere");
   const bool delaunay = empty && empty->status == check::Status::Pass;
   const OrderCheck oc = check_order_independence(mesh, rebuilt.get(), seed,
-                                                report.options.max_reported, delaunay);
+                                                report.options.max_reported, delaunay,
+                                                report.options.threads);
   if (!oc.rebuilt) {
     c.status = check::Status::Skipped;
     c.reason = "the vertices do not span space: no DT(V) to rebuild";

@@ -63,10 +63,11 @@ std::future<RebuiltDt> start_rebuild(std::span<const Point> points, std::uint64_
                                      bool concurrent);
 
 // Lists the first `max_listed` missing tets; classifies ties only with `find_ties` (on a
-// mesh not known to be Delaunay they would mean nothing, and there may be many).
+// mesh not known to be Delaunay they would mean nothing, and there may be many). The
+// lookups run on `threads` threads; the result does not depend on their number.
 OrderCheck check_order_independence(const MeshData& mesh, const RebuiltDt& dt,
                                      std::uint64_t seed, std::size_t max_listed = 10,
-                                     bool find_ties = true);
+                                     bool find_ties = true, unsigned threads = 1);
 OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
                                      std::size_t max_listed = 10, bool find_ties = true);
 

@@ -18,6 +18,7 @@
 #include "check/check.hpp"
 #include "check/domain.hpp"
 #include "check/grid.hpp"
+#include "check/interval.hpp"
 #include "check/topology.hpp"
 
 namespace pdr::check {
@@ -30,6 +31,10 @@ struct Context {
   Topology topology;
   PointGrid grid;
   std::optional<DomainMap> domain_map;
+  // Each tet's squared circumradius, enclosed (circumball.hpp): kept by
+  // delaunay.empty_sphere for quality.ratio, which would compute the same enclosure; empty
+  // until then (degenerate tets' entries are not set: both checks skip them).
+  std::vector<Interval> circum_r2;
 };
 
 // A result with the id, its invariant text (table in check.cpp), status Skipped.
@@ -60,7 +65,8 @@ enum class DegreeVerdict { Disjoint, Overlap, PremisesFail };
 DegreeVerdict overlap_by_degree(const Context& c, CheckResult& r);
 
 // delaunay_empty.cpp
-CheckResult check_empty_circumspheres(const Context& c);  // delaunay.empty_sphere
+// delaunay.empty_sphere; fills c.circum_r2.
+CheckResult check_empty_circumspheres(Context& c);
 
 // quality.cpp — Theorem 1.
 CheckResult check_radius_edge_ratio(const Context& c);  // quality.ratio

@@ -22,7 +22,7 @@
 
 namespace pdr::check {
 
-CheckResult check_empty_circumspheres(const Context& c) {
+CheckResult check_empty_circumspheres(Context& c) {
   CheckResult r = make_result("delaunay.empty_sphere");
   const auto& tets = c.mesh.tets;
   const auto& pts = c.mesh.points;
@@ -30,6 +30,7 @@ CheckResult check_empty_circumspheres(const Context& c) {
   std::vector<Collector> parts(std::max(1u, o.threads), Collector(o.max_reported));
   constexpr double kSmallBall = 16;  // radius 4 top cells
   const double side2 = c.grid.frame().side() * c.grid.frame().side();
+  c.circum_r2.assign(tets.size(), Interval{});
   parallel_blocks(tets.size(), o.threads, 1024, [&](unsigned w, std::size_t b, std::size_t e) {
     Collector& col = parts[w];
     const std::uint64_t before = signs::exact_evaluations();
@@ -44,6 +45,7 @@ CheckResult check_empty_circumspheres(const Context& c) {
       const Tet& k = tets[t];
       const Point &pa = pts[k[0]], &pb = pts[k[1]], &pc = pts[k[2]], &pd = pts[k[3]];
       const BallEnclosure ball = circumball(pa, pb, pc, pd);
+      c.circum_r2[t] = ball.r2;
       const Box box = enclosing_box(ball);
       std::int64_t first = -1;
       std::uint64_t inside = 0;

@@ -59,7 +59,8 @@ CheckResult check_radius_edge_ratio(const Context& c) {
           const Interval x = squared_length(*p[i], *p[j]);
           l2 = {std::min(l2.lo, x.lo), std::min(l2.hi, x.hi)};
         }
-      const Interval R2 = circumball(*p[0], *p[1], *p[2], *p[3]).r2;
+      const Interval R2 = t < c.circum_r2.size() ? c.circum_r2[t]
+                                                 : circumball(*p[0], *p[1], *p[2], *p[3]).r2;
       const double ratio = std::sqrt(mid(R2) / mid(l2));
       if (ratio > ext[w].ratio || (ratio == ext[w].ratio && t < ext[w].tet)) ext[w] = {ratio, t};
       if (!bounded) continue;

@@ -68,10 +68,15 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
       for (int i = 0; i < 4; ++i)
         if (distinct(tets[t], i)) inc[fill[tets[t][i]]++] = static_cast<std::uint32_t>(t);
   }
-  // One part per thread, over vertex ranges holding about equal numbers of incidences;
-  // each part's arrays are reserved to their bounds at once (growing them would copy and,
-  // on a virtual machine, fault in pages several times).
-  const unsigned nparts = std::max(1u, std::min(threads, 64u));
+  // Parts over vertex ranges holding about equal numbers of incidences, several per
+  // thread, taken in turn: a low vertex id is the smallest of more of its faces than a
+  // high one, so equal incidences are not equal work (one part per thread: the first
+  // took twice as long as the second). Each part's arrays are reserved to their bounds
+  // at once (growing them would copy and, on a virtual machine, fault in pages several
+  // times).
+  constexpr unsigned kPartsPerThread = 16;
+  const unsigned workers = std::max(1u, std::min(threads, 64u));
+  const unsigned nparts = workers * kPartsPerThread;
   std::vector<std::uint32_t> cut(nparts + 1, n);
   cut[0] = 0;
   for (unsigned p = 1; p < nparts; ++p)
@@ -79,7 +84,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
                                                          static_cast<std::uint32_t>(std::uint64_t{start[n]} * p / nparts)) -
                                         start.begin());
   std::vector<Part> parts(nparts);
-  parallel_blocks(nparts, nparts, 1, [&](unsigned, std::size_t b, std::size_t) {
+  parallel_blocks(nparts, workers, 1, [&](unsigned, std::size_t b, std::size_t) {
     Part& part = parts[b];
     const std::uint32_t v0 = cut[b], v1 = std::max(cut[b], cut[b + 1]);
     const std::size_t incidences = start[v1] - start[v0];

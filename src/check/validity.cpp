@@ -180,34 +180,41 @@ CheckResult check_unreferenced_vertices(const Context& c) {
 CheckResult check_face_sharing(const Context& c) {
   CheckResult r = make_result("validity.face_sharing");
   const Topology& topo = c.topology;
-  for (std::size_t f = 0; f < topo.faces.size(); ++f) {
-    const auto h = topo.holders(f);
-    ++r.checked;
-    bool bad = false;
-    std::string why;
-    if (h.size() > 2) {
-      bad = true;
-      why = " is shared by " + std::to_string(h.size()) + " tets";
-    } else if (h.size() == 2) {
-      const int s0 = apex_side(c, topo.faces[f], h[0]), s1 = apex_side(c, topo.faces[f], h[1]);
-      if (s0 == 0 || s1 == 0) {
-        ++r.counts["degenerate_skipped"];
-      } else if (s0 == s1) {
-        bad = true;
+  const Options& o = c.options;
+  std::vector<Collector> parts(std::max(1u, o.threads), Collector(o.max_reported));
+  const auto block = [&](unsigned w, std::size_t b, std::size_t e) {
+    Collector& col = parts[w];
+    for (std::size_t f = b; f < e; ++f) {
+      const auto h = topo.holders(f);
+      ++col.checked;
+      std::string why;
+      if (h.size() > 2) {
+        why = " is shared by " + std::to_string(h.size()) + " tets";
+      } else if (h.size() == 2) {
+        const int s0 = apex_side(c, topo.faces[f], h[0]), s1 = apex_side(c, topo.faces[f], h[1]);
+        if (s0 == 0 || s1 == 0) {
+          ++col.counts["degenerate_skipped"];
+          continue;
+        }
+        if (s0 != s1) continue;
         why = " has tets " + std::to_string(h[0].tet) + " and " + std::to_string(h[1].tet) +
               " on the same side";
+      } else {
+        continue;
       }
-    }
-    if (!bad) continue;
-    ++r.violations;
-    if (r.findings.size() < c.options.max_reported) {
+      if (!col.wants(f)) {
+        col.violation(f);
+        continue;
+      }
       const Tri& k = topo.faces[f];
-      Finding fd = make_finding(c.mesh, "face", kNoId, {k[0], k[1], k[2]},
-                                "validity.face_sharing: face (" + std::to_string(k[0]) + "," +
-                                    std::to_string(k[1]) + "," + std::to_string(k[2]) + ")" + why);
-      r.findings.push_back(std::move(fd));
+      col.violation(f, make_finding(c.mesh, "face", kNoId, {k[0], k[1], k[2]},
+                                    "validity.face_sharing: face (" + std::to_string(k[0]) + "," +
+                                        std::to_string(k[1]) + "," + std::to_string(k[2]) + ")" +
+                                        why));
     }
-  }
+  };
+  parallel_blocks(topo.faces.size(), o.threads, 1 << 14, block);
+  merge_into(parts, r, o.max_reported);
   conclude(r);
   return r;
 }

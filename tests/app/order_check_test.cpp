@@ -71,6 +71,35 @@ TEST(OrderCheck, KernelMeshPassesAndOneForeignTetIsFound) {
   EXPECT_EQ(check_order_independence(m, 5).missing, 1u);
 }
 
+// The misses are looked up in blocks on several threads: the count and the first listed
+// (in mesh order) are the same for any number of threads.
+TEST(OrderCheck, TheMissesListedDoNotDependOnThreads) {
+  std::vector<Point> pts;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j)
+      for (int k = 0; k < 8; ++k)
+        pts.push_back({i + 0.001 * ((i * 7 + j * 3 + k) % 5), j + 0.0013 * ((i + j * 5) % 7),
+                       k + 0.0007 * ((j + k * 3) % 11)});
+  Delaunay dt(pts);
+  BulkOptions o;
+  o.renumber = false;
+  ASSERT_EQ(bulk_insert(dt, o).status, BulkStatus::Ok);
+  MeshData m = to_mesh_data(dt);
+  std::size_t changed = 0;
+  for (std::size_t t = 0; t < m.tets.size(); t += 37, ++changed)
+    m.tets[t][0] = m.tets[t][0] == 0 ? 511u : 0u;  // far from the tet's other vertices
+  const OrderCheck one = check_order_independence(m, rebuild_dt(m.points, 5), 5, 3, false, 1);
+  EXPECT_EQ(one.missing, changed);
+  ASSERT_EQ(one.first_index.size(), 3u);
+  EXPECT_EQ(one.first_index, (std::vector<std::size_t>{0, 37, 74}));
+  for (unsigned threads : {2u, 3u, 8u}) {
+    const OrderCheck r = check_order_independence(m, rebuild_dt(m.points, 5), 5, 3, false, threads);
+    EXPECT_EQ(r.missing, one.missing) << threads;
+    EXPECT_EQ(r.first, one.first) << threads;
+    EXPECT_EQ(r.first_index, one.first_index) << threads;
+  }
+}
+
 check::CheckResult as_check(const MeshData& m) {
   check::Report report = check::check_mesh(check::view_of(m), check::Options{});
   add_order_check(report, m, kOrderCheckSeed, start_rebuild(m.points, kOrderCheckSeed, true));

@@ -121,6 +121,30 @@ TEST(Validity, TetsOnTheSameSideOfASharedFaceFailFaceSharing) {
   EXPECT_EQ(result(r, "validity.orientation").status, Status::Pass);
 }
 
+// Many shared faces, few listed: the same first ones in face order, and the same counts,
+// whatever the number of threads (the faces are checked in blocks on each thread).
+TEST(Validity, FaceSharingReportDoesNotDependOnThreads) {
+  MeshData m = kuhn_grid(12);
+  const std::size_t n = m.tets.size();
+  for (std::size_t t = 0; t < n; t += 3) m.tets.push_back(m.tets[t]);  // each face thrice held
+  Options o;
+  o.max_reported = 4;
+  std::string first;
+  for (unsigned threads : {1u, 2u, 3u}) {
+    o.threads = threads;
+    nlohmann::json j = to_json(run(m, o));
+    nlohmann::json sharing;
+    for (const auto& c : j["checks"])
+      if (c["id"] == "validity.face_sharing") sharing = c;
+    ASSERT_FALSE(sharing.is_null());
+    EXPECT_EQ(sharing["findings"].size(), 4u);
+    EXPECT_GT(sharing["violations"].get<std::uint64_t>(), 1000u);
+    sharing.erase("seconds");
+    if (first.empty()) first = sharing.dump();
+    EXPECT_EQ(sharing.dump(), first) << "threads=" << threads;
+  }
+}
+
 TEST(Validity, IndexOutOfRangeSkipsTheRest) {
   MeshData m = kuhn_grid(1);
   m.tets[2][3] = 99;
