@@ -24,7 +24,7 @@ Quad sorted(Quad q) {
 }
 
 // For each missing tet, a vertex of DT(V) adjacent to one of its vertices that lies exactly
-// on its circumsphere, or -1. `dt` holds the rebuilt tets (sorted quads).
+// on its circumsphere, or -1. `dt` holds the rebuilt tets (sorted quads, any order).
 std::vector<std::int64_t> tie_vertices(const MeshData& mesh, const std::vector<Quad>& dt,
                                        const std::vector<std::size_t>& missing) {
   // The DT(V) neighbours of every vertex of a missing tet, in one pass over DT(V).
@@ -80,14 +80,27 @@ RebuiltDt rebuild_dt(std::span<const Point> points, std::uint64_t seed) {
   r.rebuilt = bulk_insert(dt, o).status == BulkStatus::Ok;
   if (!r.rebuilt) return r;
   const TetStore& s = dt.store();
-  r.tets.reserve(s.live());
+  std::vector<Quad> quads;
+  quads.reserve(s.live());
   for (TetId t = 0; t < s.slots(); ++t)
     if (s.is_alive(t) && !s.is_ghost(t)) {
       const VertexId* v = s.vertices(t);
-      r.tets.push_back(sorted({v[0], v[1], v[2], v[3]}));
+      quads.push_back(sorted({v[0], v[1], v[2], v[3]}));
     }
-  std::sort(r.tets.begin(), r.tets.end());
+  // A counting sort by smallest vertex.
+  r.first.assign(points.size() + 1, 0);
+  for (const Quad& q : quads) ++r.first[q[0] + 1];
+  for (std::size_t v = 0; v < points.size(); ++v) r.first[v + 1] += r.first[v];
+  r.tets.resize(quads.size());
+  std::vector<std::uint32_t> fill(r.first.begin(), r.first.end() - 1);
+  for (const Quad& q : quads) r.tets[fill[q[0]]++] = q;
   return r;
+}
+
+bool RebuiltDt::holds(const Quad& q) const {
+  if (q[0] + std::size_t{1} >= first.size()) return false;
+  return std::find(tets.begin() + first[q[0]], tets.begin() + first[q[0] + 1], q) !=
+         tets.begin() + first[q[0] + 1];
 }
 
 std::future<RebuiltDt> start_rebuild(std::span<const Point> points, std::uint64_t seed,
@@ -109,15 +122,13 @@ OrderCheck check_order_independence(const MeshData& mesh, const RebuiltDt& dt,
   r.seed = seed;
   r.tets = mesh.tets.size();
   r.rebuilt = dt.rebuilt;
-  const std::vector<Quad>& all = dt.tets;
   // Each worker lists the misses of its blocks; sorted after, they are in mesh order.
   std::vector<std::vector<std::size_t>> misses(std::max(1u, threads));
   check::parallel_blocks(mesh.tets.size(), threads, 1 << 14,
                          [&](unsigned w, std::size_t b, std::size_t e) {
                            for (std::size_t i = b; i < e; ++i) {
                              const auto& t = mesh.tets[i];
-                             if (!std::binary_search(all.begin(), all.end(),
-                                                     sorted({t[0], t[1], t[2], t[3]})))
+                             if (!dt.holds(sorted({t[0], t[1], t[2], t[3]})))
                                misses[w].push_back(i);
                            }
                          });
@@ -131,7 +142,7 @@ OrderCheck check_order_independence(const MeshData& mesh, const RebuiltDt& dt,
   }
   r.missing = missing.size();
   if (find_ties && r.rebuilt && !missing.empty()) {
-    const std::vector<std::int64_t> tie = tie_vertices(mesh, all, missing);
+    const std::vector<std::int64_t> tie = tie_vertices(mesh, dt.tets, missing);
     r.ties = std::size_t(std::count_if(tie.begin(), tie.end(), [](std::int64_t w) { return w >= 0; }));
     r.first_tie_vertex.assign(tie.begin(), tie.begin() + std::ptrdiff_t(r.first.size()));
   } else {

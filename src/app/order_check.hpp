@@ -54,7 +54,12 @@ struct OrderCheck {
 // space (or are not all finite: nothing is built then).
 struct RebuiltDt {
   bool rebuilt = false;
-  std::vector<std::array<std::uint32_t, 4>> tets;  // sorted
+  // Each finite tet as its sorted vertex quadruple, grouped by smallest vertex: those of
+  // vertex v are tets[first[v]] .. tets[first[v + 1] - 1] (a lookup reads one short run
+  // instead of searching all of them).
+  std::vector<std::array<std::uint32_t, 4>> tets;
+  std::vector<std::uint32_t> first;  // points.size() + 1 offsets
+  bool holds(const std::array<std::uint32_t, 4>& sorted_quad) const;
 };
 RebuiltDt rebuild_dt(std::span<const Point> points, std::uint64_t seed);
 // The rebuild on another thread (`concurrent`), or on the caller's when the result is
