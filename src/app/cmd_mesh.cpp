@@ -270,6 +270,10 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   MeshData mesh = export_domain(
       vm, an.domain.plc,
       static_cast<std::size_t>(std::count(an.domain.cell_inside.begin(), an.domain.cell_inside.end(), 1)));
+  // Remarks 1-2 (the order check, below): DT(V) is rebuilt on another thread from here,
+  // while the summary is made, the files are written and the checker runs.
+  std::future<RebuiltDt> rebuilt;
+  if (args.check) rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);
   summary.set("vertices", mesh.points.size());
   summary.set("tets", mesh.tets.size());
   summary.set("boundary_faces", mesh.faces.size());
@@ -339,8 +343,6 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
       co.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
-    // Remarks 1-2 (below): DT(V) is rebuilt meanwhile on another thread.
-    auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);
     skip_dropped(an.domain, co);
     const check::Report report = check::check_mesh(check::view_of(mesh), an.domain.plc, co);
     timer.lap("check");
