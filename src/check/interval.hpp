@@ -110,4 +110,31 @@ inline IVec cross(const IVec& a, const IVec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
+// |b - a|^2 enclosed from one plain evaluation, widened once (norm2(ivec(b) - ivec(a))
+// widens each of its eight operations, and the radius-edge check makes six per tet).
+//
+// Proof. Let u = 2^-53 and D_i = b_i - a_i exactly, L = D_0^2 + D_1^2 + D_2^2. In IEEE-754
+// double with round-to-nearest: d_i = fl(b_i - a_i) = D_i (1 + e_i), |e_i| <= u (a
+// difference that is subnormal is exact); q_i = fl(d_i d_i) = d_i^2 (1 + f_i) + g_i,
+// |f_i| <= u, |g_i| <= 2^-1075 (underflow); s1 = fl(q_0 + q_1) = (q_0 + q_1)(1 + h_1) and
+// s = fl(s1 + q_2) = (s1 + q_2)(1 + h_2), |h_j| <= u (sums are exact when subnormal). Every
+// q_i >= 0, so each term of L reaches s with a factor in [(1 - u)^5, (1 + u)^5] and the g_i
+// add at most 3 2^-1075 (1 + u)^2 < 2^-1073:
+//   s (1 + u)^-5 - 2^-1073 <= L <= s (1 - u)^-5 + 2^-1073,
+// and (1 + u)^-5 >= 1 - 5u, (1 - u)^-5 <= 1 + 6u. Both factors are doubles (1 - 5u: the
+// spacing below 1 is u; 1 + 6u = 1 + 3 2^-52), and each bound is computed in two rounded
+// operations, each widened by interval_detail::down/up. An overflow makes s infinite: the
+// whole line (exact arithmetic decides). Requires -ffp-contract=off, as everything here.
+inline Interval squared_distance(const Point& a, const Point& b) {
+  using interval_detail::down;
+  using interval_detail::up;
+  const double d0 = b[0] - a[0], d1 = b[1] - a[1], d2 = b[2] - a[2];
+  const double s = (d0 * d0 + d1 * d1) + d2 * d2;
+  if (!std::isfinite(s)) return Interval::whole();
+  constexpr double kLow = 1 - 5 * 0x1p-53, kHigh = 1 + 6 * 0x1p-53, kTiny = 0x1p-1073;
+  const double lo = down(down(s * kLow) - kTiny), hi = up(up(s * kHigh) + kTiny);
+  if (!std::isfinite(hi)) return Interval::whole();
+  return {std::max(lo, 0.0), hi};
+}
+
 }  // namespace pdr::check

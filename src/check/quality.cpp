@@ -23,7 +23,7 @@ namespace {
 
 double mid(const Interval& x) { return 0.5 * x.lo + 0.5 * x.hi; }
 
-Interval squared_length(const Point& a, const Point& b) { return norm2(ivec(b) - ivec(a)); }
+Interval squared_length(const Point& a, const Point& b) { return squared_distance(a, b); }
 
 }  // namespace
 

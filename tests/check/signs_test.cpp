@@ -140,5 +140,44 @@ RC_GTEST_PROP(Interval, CircumballEnclosesTheExactCenter, ()) {
     for (int i = 0; i < 3; ++i) RC_ASSERT(box.lo[i] <= (*p)[i] && (*p)[i] <= box.hi[i]);
 }
 
+// Squared distances of points of every magnitude: small dyadic, arbitrary, tiny (down to
+// subnormal differences), huge (up to overflow), and pairs an ulp apart.
+RC_GTEST_PROP(Interval, SquaredDistanceEnclosesTheExactValue, ()) {
+  const int scale = *rc::gen::inRange(-1074, 1024);
+  const auto coordinate = [&] {
+    return rc::gen::map(rc::gen::inRange(-1000000, 1000001),
+                        [scale](int k) { return std::ldexp(k / 1e6, scale); });
+  };
+  Point a{}, b{};
+  for (int i = 0; i < 3; ++i) {
+    a[i] = *coordinate();
+    b[i] = *rc::gen::oneOf(coordinate(), rc::gen::just(std::nextafter(a[i], INFINITY)),
+                           rc::gen::just(a[i]));
+  }
+  const Interval x = squared_distance(a, b);
+  RC_ASSERT(!std::isnan(x.lo) && !std::isnan(x.hi));
+  RC_ASSERT(x.lo >= 0 || !x.finite());  // the whole line after an overflow
+  const mpq_class l2 = exact::squared_distance(a, b);
+  RC_ASSERT(below(x.lo, l2));
+  RC_ASSERT(above(x.hi, l2));
+  // Tight: within a few ulps of the value, or of the smallest subnormal.
+  if (x.finite()) RC_ASSERT(x.hi - x.lo <= 0x1p-48 * x.hi + 0x1p-1070);
+}
+
+TEST(Interval, SquaredDistanceOfExtremesIsEnclosed) {
+  const double big = 0x1p1000, tiny = 0x1p-1074;
+  for (const auto& [a, b] : std::vector<std::pair<Point, Point>>{
+           {{0, 0, 0}, {tiny, tiny, tiny}},
+           {{0, 0, 0}, {0x1p-540, 0, 0}},
+           {{-big, 0, 0}, {big, 0, 0}},  // overflows: the whole line
+           {{1, 1, 1}, {std::nextafter(1.0, 2.0), 1, 1}},
+           {{0.1, 0.2, 0.3}, {0.4, 0.5, 0.6}}}) {
+    const Interval x = squared_distance(a, b);
+    const mpq_class l2 = exact::squared_distance(a, b);
+    EXPECT_TRUE(below(x.lo, l2) && above(x.hi, l2)) << a[0] << " " << b[0];
+  }
+  EXPECT_FALSE(squared_distance({-big, 0, 0}, {big, 0, 0}).finite());
+}
+
 }  // namespace
 }  // namespace pdr::check
