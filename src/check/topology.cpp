@@ -84,7 +84,9 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
                                                          static_cast<std::uint32_t>(std::uint64_t{start[n]} * p / nparts)) -
                                         start.begin());
   std::vector<Part> parts(nparts);
-  parallel_blocks(nparts, workers, 1, [&](unsigned, std::size_t b, std::size_t) {
+  // Per worker: the bucket (plus one) that last listed each vertex as an edge's end.
+  std::vector<std::vector<std::uint32_t>> seen_by(workers);
+  parallel_blocks(nparts, workers, 1, [&](unsigned w, std::size_t b, std::size_t) {
     Part& part = parts[b];
     const std::uint32_t v0 = cut[b], v1 = std::max(cut[b], cut[b + 1]);
     const std::size_t incidences = start[v1] - start[v0];
@@ -94,7 +96,9 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
     part.boundary.reserve(incidences / 8);
     part.edges.reserve(incidences * 3 / 2);
     std::vector<Rec> recs;
-    std::vector<std::uint32_t> ends;
+    std::vector<std::uint32_t> ends;  // distinct: seen[v] == u + 1 once v is in
+    std::vector<std::uint32_t>& seen = seen_by[w];
+    if (seen.empty()) seen.assign(n, 0);
     for (std::uint32_t u = v0; u < v1; ++u) {
       recs.clear();
       ends.clear();
@@ -116,7 +120,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
               recs.push_back({std::min(o[0], o[1]), std::max(o[0], o[1]), t * 4 + static_cast<std::uint32_t>(f)});
           }
           for (std::uint32_t v : q)
-            if (v > u) ends.push_back(v);
+            if (v > u && seen[v] != u + 1) seen[v] = u + 1, ends.push_back(v);
           continue;
         }
         for (int f = 0; f < 4; ++f) {
@@ -124,7 +128,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
           if (s[0] == u) recs.push_back({s[1], s[2], t * 4 + static_cast<std::uint32_t>(f)});
         }
         for (std::uint32_t v : q)
-          if (v > u) ends.push_back(v);
+          if (v > u && seen[v] != u + 1) seen[v] = u + 1, ends.push_back(v);
       }
       std::sort(recs.begin(), recs.end());
       for (std::size_t i = 0; i < recs.size();) {
@@ -137,7 +141,6 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
         i = j;
       }
       std::sort(ends.begin(), ends.end());
-      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
       for (std::uint32_t v : ends) part.edges.push_back(edge_key(u, v));
     }
   });

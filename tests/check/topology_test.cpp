@@ -1,0 +1,63 @@
+// build_topology against a brute-force one: on random tet soups (repeated vertices within a
+// tet included), the same distinct faces in lexicographic order with the same holders, the
+// same boundary faces and the same distinct edges, for any number of threads.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "check/topology.hpp"
+
+namespace pdr::check {
+namespace {
+
+struct Brute {
+  std::map<Tri, std::vector<std::pair<std::uint32_t, int>>> faces;  // sorted face -> holders
+  std::set<std::uint64_t> edges;
+};
+
+Brute brute(const std::vector<Tet>& tets) {
+  Brute b;
+  for (std::uint32_t t = 0; t < tets.size(); ++t) {
+    for (int f = 0; f < 4; ++f) {
+      Tri k = face_of(tets[t], f);
+      std::sort(k.begin(), k.end());
+      b.faces[k].push_back({t, f});
+    }
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (tets[t][i] < tets[t][j]) b.edges.insert(edge_key(tets[t][i], tets[t][j]));
+  }
+  return b;
+}
+
+RC_GTEST_PROP(Topology, EqualsTheBruteForceOne, ()) {
+  const auto n = *rc::gen::inRange<std::uint32_t>(1, 40);
+  const auto count = *rc::gen::inRange<std::size_t>(0, 300);
+  std::vector<Tet> tets(count);
+  for (Tet& t : tets)
+    for (auto& v : t) v = *rc::gen::inRange<std::uint32_t>(0, n);
+  const unsigned threads = *rc::gen::inRange(1u, 5u);
+  const Topology topo = build_topology(tets, threads);
+  const Brute b = brute(tets);
+  RC_ASSERT(topo.faces.size() == b.faces.size());
+  RC_ASSERT(topo.face_start.size() == b.faces.size() + 1);
+  std::size_t i = 0;
+  std::vector<std::uint32_t> boundary;
+  for (const auto& [key, holders] : b.faces) {
+    RC_ASSERT(topo.faces[i] == key);
+    std::vector<std::pair<std::uint32_t, int>> got;
+    for (const FaceRef& r : topo.holders(i)) got.push_back({r.tet, r.local});
+    std::sort(got.begin(), got.end());
+    RC_ASSERT(got == holders);
+    if (holders.size() == 1) boundary.push_back(static_cast<std::uint32_t>(i));
+    ++i;
+  }
+  RC_ASSERT(topo.boundary == boundary);
+  RC_ASSERT(std::vector<std::uint64_t>(b.edges.begin(), b.edges.end()) == topo.edges);
+}
+
+}  // namespace
+}  // namespace pdr::check
