@@ -21,6 +21,7 @@
 #include "io/error.hpp"
 #include "io/mesh_io.hpp"
 #include "io/vtu.hpp"
+#include "par/affinity.hpp"
 
 namespace pdr::app {
 
@@ -37,7 +38,8 @@ CLI::App* add_check_command(CLI::App& app, CheckArgs& chk) {
   cchk->add_option("--h", chk.h, "Require every edge longer than H")
       ->check(CLI::NonNegativeNumber);
   cchk->add_flag("--json", chk.json, "Print the report as one JSON object");
-  cchk->add_option("--threads", chk.threads, "Worker threads")->check(CLI::Range(1, 256));
+  cchk->add_option("--threads", chk.threads, "Worker threads (default: every CPU it may use)")
+      ->check(CLI::Range(1, 256));
   cchk->add_option("--planarity-tolerance", chk.planarity_tolerance,
                    "As pdr mesh's: the domain's facets may deviate T facet diameters (or the "
                    "rounding of their coordinates' digits) from a plane, and vertices within 2T "
@@ -82,7 +84,8 @@ int run_check(const CheckArgs& args) {
   check::Options opt;
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
-  opt.threads = args.threads;
+  const unsigned threads = args.threads > 0 ? args.threads : par::usable_cpus();
+  opt.threads = threads;
   set_check_tolerances(args.planarity_tolerance, domain ? &*domain : nullptr, opt);
   if (progress.enabled())
     opt.on_phase = [&progress](std::string_view phase) { progress.phase("check: " + std::string(phase)); };
@@ -96,7 +99,7 @@ int run_check(const CheckArgs& args) {
     }
   const auto view = check::view_of(mesh);
   // DT(V) for order.independence is rebuilt meanwhile on another thread.
-  auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);
+  auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, threads > 1);
   check::Report report =
       domain ? check::check_mesh(view, *domain, opt) : check::check_mesh(view, opt);
   if (progress.enabled()) progress.phase("check: order independence");

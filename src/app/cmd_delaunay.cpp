@@ -11,6 +11,7 @@
 #include "app/summary.hpp"
 #include "io/error.hpp"
 #include "io/mesh_io.hpp"
+#include "par/affinity.hpp"
 
 namespace pdr::app {
 
@@ -35,7 +36,9 @@ int run_delaunay(const DelaunayArgs& args) {
   std::vector<Point> points = io::read_domain(args.points).points;
   timer.lap("read");
   const int code = triangulate_write_check(std::move(points), args.points, args.prefix,
-                                           formats, args.check, args.threads, timer, summary);
+                                           formats, args.check,
+                                           args.threads > 0 ? args.threads : par::usable_cpus(),
+                                           timer, summary);
   summary.print(args.json);
   return code;
 }

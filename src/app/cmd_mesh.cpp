@@ -34,6 +34,7 @@
 #include "io/error.hpp"
 #include "io/mesh_io.hpp"
 #include "mesh/tables.hpp"
+#include "par/affinity.hpp"
 #include "refine/initial.hpp"
 #include "refine/quality.hpp"
 #include "refine/seq_refinement.hpp"
@@ -129,6 +130,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshArgs& a) {
   c->add_flag("--audit", a.options.audit, "Check Lemma 1's invariants after every insertion");
   c->add_flag("--json", a.json, "Print the summary as one JSON object");
   c->add_option("--seed", a.seed, "Seed of the initial insertion order");
+  c->add_option("--threads", a.threads, "Checker threads (default: every CPU it may use)")
+      ->check(CLI::Range(1, 256));
   c->add_option("--planarity-tolerance", a.planarity_tolerance,
                 "Accept facets whose vertices lie within T facet diameters of a plane "
                 "(default 1e-9; TetGen's -T), or within the rounding of the coordinates' "
@@ -272,8 +275,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
       static_cast<std::size_t>(std::count(an.domain.cell_inside.begin(), an.domain.cell_inside.end(), 1)));
   // Remarks 1-2 (the order check, below): DT(V) is rebuilt on another thread from here,
   // while the summary is made, the files are written and the checker runs.
+  const unsigned threads = args.threads > 0 ? args.threads : par::usable_cpus();
   std::future<RebuiltDt> rebuilt;
-  if (args.check) rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, args.threads > 1);
+  if (args.check) rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, threads > 1);
   summary.set("vertices", mesh.points.size());
   summary.set("tets", mesh.tets.size());
   summary.set("boundary_faces", mesh.faces.size());
@@ -338,7 +342,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   if (args.check) {
     check::Options co;
     co.ratio_bound = opt.ratio;
-    co.threads = args.threads;
+    co.threads = threads;
     set_check_tolerances(args.planarity_tolerance, &an.domain.plc, co);
     if (rr.stats.h_theorem > 0) co.min_edge = rr.stats.h_theorem;
     if (progress.enabled())
@@ -368,7 +372,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     // order (order_check.hpp); rebuilt here in a seeded order unlike the mesher's.
     progress.phase("order check");
     const OrderCheck oc = check_order_independence(mesh, rebuilt.get(), kOrderCheckSeed, 10,
-                                                   true, std::max(1u, args.threads));
+                                                   true, threads);
     timer.lap("order_check");
     summary.set("order_independence",
                 nlohmann::json{{"seed", oc.seed}, {"tets", oc.tets}, {"missing", oc.missing},

@@ -26,7 +26,7 @@ struct DelaunayArgs {
   std::vector<std::string> formats{"node", "vtu"};
   bool check = true;
   bool json = false;
-  unsigned threads = 2;
+  unsigned threads = 0;                // checker threads (0: every usable CPU)
 };
 int run_delaunay(const DelaunayArgs& args);
 
@@ -36,7 +36,7 @@ struct CheckArgs {
   std::optional<double> ratio;
   std::optional<double> h;
   bool json = false;
-  unsigned threads = 2;
+  unsigned threads = 0;                // 0: every usable CPU
   std::size_t max_reported = 20;
   std::optional<std::size_t> explain;  // --explain T: describe tet T in full
   std::optional<std::string> vtu;      // --vtu OUT.vtu: the mesh with per-tet check fields
@@ -54,7 +54,7 @@ struct MeshArgs {
   bool check = true;
   bool json = false;
   std::uint64_t seed = 0x5EED;
-  unsigned threads = 2;
+  unsigned threads = 0;                // checker threads (0: every usable CPU)
   std::size_t initial_tets = 0;        // mpirun: M_o's interior size (0: automatic)
   std::uint64_t inject_latency_us = 0; // mpirun: each message held this long
   std::size_t submeshes = 0;          // mpirun: submeshes of M_o, >= ranks (0: one per rank)

@@ -51,7 +51,8 @@ int dispatch(int argc, char** argv) {
   add_formats(cdel, del.formats);
   cdel->add_flag("!--no-check", del.check, "Skip the exact check of the result");
   cdel->add_flag("--json", del.json, "Print the summary as one JSON object");
-  cdel->add_option("--threads", del.threads, "Checker threads")->check(CLI::Range(1, 256));
+  cdel->add_option("--threads", del.threads, "Checker threads (default: every CPU it may use)")
+      ->check(CLI::Range(1, 256));
 
   MeshArgs mesh;
   CLI::App* cmesh = add_mesh_command(app, mesh);

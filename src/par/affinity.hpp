@@ -13,6 +13,7 @@
 
 #include <sched.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace pdr::par {
@@ -25,6 +26,15 @@ inline bool use_every_cpu() {
   CPU_ZERO(&all);
   for (int c = 0; c < CPU_SETSIZE; ++c) CPU_SET(c, &all);  // the kernel keeps the allowed
   return sched_setaffinity(0, sizeof all, &all) == 0;
+}
+
+// The CPUs this thread may run on now (at least 1): the checker's default thread count,
+// read when the check starts (after use_every_cpu() on rank 0 of a parallel run).
+inline unsigned usable_cpus() {
+  cpu_set_t mine;
+  CPU_ZERO(&mine);
+  if (sched_getaffinity(0, sizeof mine, &mine) != 0) return 1;
+  return static_cast<unsigned>(std::max(1, CPU_COUNT(&mine)));
 }
 
 }  // namespace pdr::par
