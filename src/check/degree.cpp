@@ -196,13 +196,9 @@ DegreeVerdict overlap_by_degree(const Context& c, CheckResult& r) {
   for (std::size_t f = 0; f < topo.faces.size(); ++f) {
     const auto h = topo.holders(f);
     if (h.size() > 2) return DegreeVerdict::PremisesFail;
-    if (h.size() == 2) {
-      const Tri x = face_of(tets[h[0].tet], h[0].local), y = face_of(tets[h[1].tet], h[1].local);
-      // Opposite orientations: y is an odd permutation of x, i.e. y reversed is a rotation.
-      const Tri yr = {y[0], y[2], y[1]};
-      const bool opposite = x == yr || x == Tri{yr[1], yr[2], yr[0]} || x == Tri{yr[2], yr[0], yr[1]};
-      if (!opposite) return DegreeVerdict::PremisesFail;
-    }
+    // Opposite orientations: one holder lists the face as an odd permutation of the
+    // other's (FaceRef::odd; every tet here has distinct vertices, being positive).
+    if (h.size() == 2 && h[0].odd == h[1].odd) return DegreeVerdict::PremisesFail;
   }
   const std::size_t m = topo.boundary.size();
   std::vector<Tri> S(m);

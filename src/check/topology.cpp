@@ -15,6 +15,7 @@ namespace {
 struct Rec {
   std::uint32_t b, c;  // the face's other two vertex ids, b <= c
   std::uint32_t tl;    // tet * 4 + local face
+  std::uint8_t odd;    // FaceRef::odd
   bool operator<(const Rec& o) const {
     return b != o.b ? b < o.b : (c != o.c ? c < o.c : tl < o.tl);
   }
@@ -23,6 +24,11 @@ struct Rec {
 Tri sorted(Tri f) {
   std::sort(f.begin(), f.end());
   return f;
+}
+
+// The parity of the inversions of f's vertex order (FaceRef::odd).
+std::uint8_t odd(const Tri& f) {
+  return static_cast<std::uint8_t>(((f[0] > f[1]) + (f[0] > f[2]) + (f[1] > f[2])) & 1);
 }
 
 // One block of vertices' share of the topology, with face indices local to the block.
@@ -117,7 +123,8 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
             for (int j = 0; j < 4; ++j)
               if (j != f && j != i) o[m++] = q[j];
             if (o[0] > u && o[1] > u)
-              recs.push_back({std::min(o[0], o[1]), std::max(o[0], o[1]), t * 4 + static_cast<std::uint32_t>(f)});
+              recs.push_back({std::min(o[0], o[1]), std::max(o[0], o[1]),
+                              t * 4 + static_cast<std::uint32_t>(f), odd(face_of(q, f))});
           }
           for (std::uint32_t v : q)
             if (v > u && seen[v] != u + 1) seen[v] = u + 1, ends.push_back(v);
@@ -125,7 +132,8 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
         }
         for (int f = 0; f < 4; ++f) {
           const Tri s = sorted(face_of(q, f));
-          if (s[0] == u) recs.push_back({s[1], s[2], t * 4 + static_cast<std::uint32_t>(f)});
+          if (s[0] == u)
+            recs.push_back({s[1], s[2], t * 4 + static_cast<std::uint32_t>(f), odd(face_of(q, f))});
         }
         for (std::uint32_t v : q)
           if (v > u && seen[v] != u + 1) seen[v] = u + 1, ends.push_back(v);
@@ -136,7 +144,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
         part.face_start.push_back(static_cast<std::uint32_t>(part.refs.size()));
         part.faces.push_back({u, recs[i].b, recs[i].c});
         for (; j < recs.size() && recs[j].b == recs[i].b && recs[j].c == recs[i].c; ++j)
-          part.refs.push_back({recs[j].tl >> 2, static_cast<std::uint8_t>(recs[j].tl & 3)});
+          part.refs.push_back({recs[j].tl >> 2, static_cast<std::uint8_t>(recs[j].tl & 3), recs[j].odd});
         if (j - i == 1) part.boundary.push_back(static_cast<std::uint32_t>(part.faces.size() - 1));
         i = j;
       }

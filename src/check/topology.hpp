@@ -42,6 +42,12 @@ static_assert(face_table_is_odd(), "face table must orient faces outward");
 struct FaceRef {
   std::uint32_t tet;
   std::uint8_t local;  // face index in kFaceVertices
+  // face_of(tet, local) is an odd permutation of the sorted face (for a tet of distinct
+  // vertices; meaningless otherwise). Since (face_of(t, f), t[f]) is an odd permutation of
+  // t, the sorted face followed by the apex is an even permutation of t exactly when this
+  // is set; and the two holders of a face list it in opposite orientations exactly when
+  // they differ here. The checks read it instead of the tet.
+  std::uint8_t odd = 0;
 };
 
 struct Topology {

@@ -27,22 +27,11 @@
 namespace pdr::check {
 namespace {
 
-// Sign of the permutation taking tet t's vertex order to `seq` (ids of t, distinct).
-int parity(const Tet& t, const std::array<std::uint32_t, 4>& seq) {
-  std::array<int, 4> pos{};
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j)
-      if (t[j] == seq[i]) pos[i] = j;
-  int inv = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) inv += pos[i] > pos[j] ? 1 : 0;
-  return inv % 2 == 0 ? 1 : -1;
-}
-
-// orient3d(face key a<b<c, apex) from the holder's exact orientation.
-int apex_side(const Context& c, const Tri& key, const FaceRef& r) {
-  const Tet& t = c.mesh.tets[r.tet];
-  return to_int(c.orientation[r.tet]) * parity(t, {key[0], key[1], key[2], t[r.local]});
+// orient3d(face key a<b<c, apex) from the holder's exact orientation: the sorted face and
+// the apex are an even permutation of the tet exactly when the face is listed oddly
+// (FaceRef::odd).
+int apex_side(const Context& c, const FaceRef& r) {
+  return to_int(c.orientation[r.tet]) * (r.odd ? 1 : -1);
 }
 
 bool same_cycle(const Tri& a, const Tri& b) {
@@ -191,7 +180,7 @@ CheckResult check_face_sharing(const Context& c) {
       if (h.size() > 2) {
         why = " is shared by " + std::to_string(h.size()) + " tets";
       } else if (h.size() == 2) {
-        const int s0 = apex_side(c, topo.faces[f], h[0]), s1 = apex_side(c, topo.faces[f], h[1]);
+        const int s0 = apex_side(c, h[0]), s1 = apex_side(c, h[1]);
         if (s0 == 0 || s1 == 0) {
           ++col.counts["degenerate_skipped"];
           continue;

@@ -1,6 +1,7 @@
 // build_topology against a brute-force one: on random tet soups (repeated vertices within a
 // tet included), the same distinct faces in lexicographic order with the same holders, the
-// same boundary faces and the same distinct edges, for any number of threads.
+// same boundary faces and the same distinct edges, for any number of threads; each holder's
+// parity bit (FaceRef::odd) as the permutations say.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -17,6 +18,23 @@ struct Brute {
   std::map<Tri, std::vector<std::pair<std::uint32_t, int>>> faces;  // sorted face -> holders
   std::set<std::uint64_t> edges;
 };
+
+// Sign of the permutation taking tet t's vertex order to `seq` (ids of t, distinct).
+int parity(const Tet& t, const std::array<std::uint32_t, 4>& seq) {
+  std::array<int, 4> pos{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      if (t[j] == seq[i]) pos[i] = j;
+  int inv = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) inv += pos[i] > pos[j] ? 1 : 0;
+  return inv % 2 == 0 ? 1 : -1;
+}
+
+bool distinct(const Tet& t) {
+  return t[0] != t[1] && t[0] != t[2] && t[0] != t[3] && t[1] != t[2] && t[1] != t[3] &&
+         t[2] != t[3];
+}
 
 Brute brute(const std::vector<Tet>& tets) {
   Brute b;
@@ -49,7 +67,22 @@ RC_GTEST_PROP(Topology, EqualsTheBruteForceOne, ()) {
   for (const auto& [key, holders] : b.faces) {
     RC_ASSERT(topo.faces[i] == key);
     std::vector<std::pair<std::uint32_t, int>> got;
-    for (const FaceRef& r : topo.holders(i)) got.push_back({r.tet, r.local});
+    for (const FaceRef& r : topo.holders(i)) {
+      got.push_back({r.tet, r.local});
+      // FaceRef::odd: the sorted face and the apex are an even permutation of the tet
+      // exactly when it is set.
+      const Tet& t = tets[r.tet];
+      if (distinct(t))
+        RC_ASSERT(parity(t, {key[0], key[1], key[2], t[r.local]}) == (r.odd ? 1 : -1));
+    }
+    // Two holders list the face in opposite orientations exactly when their bits differ.
+    const auto h = topo.holders(i);
+    if (h.size() == 2 && distinct(tets[h[0].tet]) && distinct(tets[h[1].tet])) {
+      const Tri x = face_of(tets[h[0].tet], h[0].local), y = face_of(tets[h[1].tet], h[1].local);
+      const Tri yr = {y[0], y[2], y[1]};
+      const bool opposite = x == yr || x == Tri{yr[1], yr[2], yr[0]} || x == Tri{yr[2], yr[0], yr[1]};
+      RC_ASSERT(opposite == (h[0].odd != h[1].odd));
+    }
     std::sort(got.begin(), got.end());
     RC_ASSERT(got == holders);
     if (holders.size() == 1) boundary.push_back(static_cast<std::uint32_t>(i));
