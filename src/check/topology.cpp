@@ -144,7 +144,8 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
         part.face_start.push_back(static_cast<std::uint32_t>(part.refs.size()));
         part.faces.push_back({u, recs[i].b, recs[i].c});
         for (; j < recs.size() && recs[j].b == recs[i].b && recs[j].c == recs[i].c; ++j)
-          part.refs.push_back({recs[j].tl >> 2, static_cast<std::uint8_t>(recs[j].tl & 3), recs[j].odd});
+          part.refs.push_back(
+              {recs[j].tl >> 2, static_cast<std::uint8_t>(recs[j].tl & 3), recs[j].odd});
         if (j - i == 1) part.boundary.push_back(static_cast<std::uint32_t>(part.faces.size() - 1));
         i = j;
       }

@@ -80,7 +80,8 @@ RC_GTEST_PROP(Topology, EqualsTheBruteForceOne, ()) {
     if (h.size() == 2 && distinct(tets[h[0].tet]) && distinct(tets[h[1].tet])) {
       const Tri x = face_of(tets[h[0].tet], h[0].local), y = face_of(tets[h[1].tet], h[1].local);
       const Tri yr = {y[0], y[2], y[1]};
-      const bool opposite = x == yr || x == Tri{yr[1], yr[2], yr[0]} || x == Tri{yr[2], yr[0], yr[1]};
+      const bool opposite =
+          x == yr || x == Tri{yr[1], yr[2], yr[0]} || x == Tri{yr[2], yr[0], yr[1]};
       RC_ASSERT(opposite == (h[0].odd != h[1].odd));
     }
     std::sort(got.begin(), got.end());
