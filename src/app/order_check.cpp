@@ -99,8 +99,11 @@ RebuiltDt rebuild_dt(std::span<const Point> points, std::uint64_t seed) {
 
 bool RebuiltDt::holds(const Quad& q) const {
   if (q[0] + std::size_t{1} >= first.size()) return false;
-  return std::find(tets.begin() + first[q[0]], tets.begin() + first[q[0] + 1], q) !=
-         tets.begin() + first[q[0] + 1];
+  for (std::uint32_t i = first[q[0]]; i < first[q[0] + 1]; ++i) {
+    const Quad& x = tets[i];  // x[0] == q[0]
+    if (x[1] == q[1] && x[2] == q[2] && x[3] == q[3]) return true;
+  }
+  return false;
 }
 
 std::future<RebuiltDt> start_rebuild(std::span<const Point> points, std::uint64_t seed,
