@@ -108,6 +108,11 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
     for (std::uint32_t u = v0; u < v1; ++u) {
       recs.clear();
       ends.clear();
+      // The next bucket's tets are requested now: they lie anywhere in the soup, and
+      // their loads overlap this bucket's work instead of stalling it one by one.
+      if (u + 1 < v1)
+        for (std::uint32_t k = start[u + 1]; k < start[u + 2]; ++k)
+          __builtin_prefetch(&tets[inc[k]]);
       for (std::uint32_t k = start[u]; k < start[u + 1]; ++k) {
         const std::uint32_t t = inc[k];
         const Tet& q = tets[t];
