@@ -45,6 +45,8 @@ Piece piece_of(const Submesh& s) {
     x.inside = static_cast<std::uint8_t>((s.inside(t) ? 1 : 0) | (s.deferred(t) ? 2 : 0));
   }
   for (TetId t = 0; t < st.slots(); ++t) {
+    if (t + 8 < st.slots() && index[t + 8] != kNone)  // its neighbours, scattered, meanwhile
+      for (int f = 0; f < 4; ++f) st.prefetch(st.neighbour(t + 8, f));
     if (index[t] == kNone) continue;
     PieceTet& x = p.tets[index[t]];
     for (int f = 0; f < 4; ++f) {

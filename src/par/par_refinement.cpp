@@ -16,6 +16,9 @@ refine::QualityRange submesh_quality(const Submesh& s) {
   const TetStore& st = s.store();
   const auto pts = s.points();
   for (TetId t = 0; t < st.slots(); ++t) {
+    if (t + 8 < st.slots())  // a later tet's points, scattered, requested meanwhile
+      for (int k = 0; k < 4; ++k)
+        if (const VertexId w = st.vertex(t + 8, k); w < pts.size()) __builtin_prefetch(&pts[w]);
     if (!st.is_alive(t) || st.is_proxy(t) || st.is_ghost(t) || !s.inside(t)) continue;
     const VertexId* v = st.vertices(t);
     q.add(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
