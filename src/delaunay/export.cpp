@@ -15,6 +15,9 @@ MeshData export_region(const Delaunay& dt, Keep keep) {
   MeshData m;
   m.points.assign(dt.points().begin(), dt.points().end());
   for (TetId t = 0; t < s.slots(); ++t) {
+    // A later tet's neighbours, scattered over the store, requested meanwhile.
+    if (constexpr TetId kAhead = 8; t + kAhead < s.slots() && s.is_alive(t + kAhead))
+      for (int f = 0; f < 4; ++f) s.prefetch(s.neighbour(t + kAhead, f));
     if (!s.is_alive(t) || s.is_ghost(t) || !keep(t)) continue;
     const VertexId* v = s.vertices(t);
     m.tets.push_back({v[0], v[1], v[2], v[3]});
