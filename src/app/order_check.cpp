@@ -94,16 +94,16 @@ RebuiltDt rebuild_dt(std::span<const Point> points, std::uint64_t seed) {
   r.tets.resize(quads.size());
   std::vector<std::uint32_t> fill(r.first.begin(), r.first.end() - 1);
   for (const Quad& q : quads) r.tets[fill[q[0]]++] = q;
+  // Each run sorted: a vertex that is the smallest of many tets (the centre of points on a
+  // sphere, numbered first) is searched, not scanned, by every lookup.
+  for (std::size_t v = 0; v < points.size(); ++v)
+    std::sort(r.tets.begin() + r.first[v], r.tets.begin() + r.first[v + 1]);
   return r;
 }
 
 bool RebuiltDt::holds(const Quad& q) const {
   if (q[0] + std::size_t{1} >= first.size()) return false;
-  for (std::uint32_t i = first[q[0]]; i < first[q[0] + 1]; ++i) {
-    const Quad& x = tets[i];  // x[0] == q[0]
-    if (x[1] == q[1] && x[2] == q[2] && x[3] == q[3]) return true;
-  }
-  return false;
+  return std::binary_search(tets.begin() + first[q[0]], tets.begin() + first[q[0] + 1], q);
 }
 
 std::future<RebuiltDt> start_rebuild(std::span<const Point> points, std::uint64_t seed,

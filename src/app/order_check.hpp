@@ -55,8 +55,8 @@ struct OrderCheck {
 struct RebuiltDt {
   bool rebuilt = false;
   // Each finite tet as its sorted vertex quadruple, grouped by smallest vertex: those of
-  // vertex v are tets[first[v]] .. tets[first[v + 1] - 1] (a lookup reads one short run
-  // instead of searching all of them).
+  // vertex v are tets[first[v]] .. tets[first[v + 1] - 1], sorted (a lookup searches one
+  // short run instead of all of them).
   std::vector<std::array<std::uint32_t, 4>> tets;
   std::vector<std::uint32_t> first;  // points.size() + 1 offsets
   bool holds(const std::array<std::uint32_t, 4>& sorted_quad) const;

@@ -53,6 +53,11 @@ bool Topology::has_edge(std::uint32_t u, std::uint32_t v) const {
 }
 
 Topology build_topology(std::span<const Tet> tets, unsigned threads) {
+  constexpr std::size_t kStampEntries = std::size_t{1} << 28;  // 1 GiB of stamps at most
+  return build_topology(tets, threads, kStampEntries);
+}
+
+Topology build_topology(std::span<const Tet> tets, unsigned threads, std::size_t stamp_entries) {
   // Incidence lists: each tet once in the list of each of its distinct vertices.
   std::uint32_t n = 0;
   for (const Tet& t : tets)
@@ -90,7 +95,9 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
                                                          static_cast<std::uint32_t>(std::uint64_t{start[n]} * p / nparts)) -
                                         start.begin());
   std::vector<Part> parts(nparts);
-  // Per worker: the bucket (plus one) that last listed each vertex as an edge's end.
+  // Per worker, within the budget: the bucket (plus one) that last listed each vertex as an
+  // edge's end, so each is listed once; beyond it, the repeats are sorted away.
+  const bool stamped = std::uint64_t{workers} * n <= stamp_entries;
   std::vector<std::vector<std::uint32_t>> seen_by(workers);
   parallel_blocks(nparts, workers, 1, [&](unsigned w, std::size_t b, std::size_t) {
     Part& part = parts[b];
@@ -102,9 +109,17 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
     part.boundary.reserve(incidences / 8);
     part.edges.reserve(incidences * 3 / 2);
     std::vector<Rec> recs;
-    std::vector<std::uint32_t> ends;  // distinct: seen[v] == u + 1 once v is in
+    std::vector<std::uint32_t> ends;
     std::vector<std::uint32_t>& seen = seen_by[w];
-    if (seen.empty()) seen.assign(n, 0);
+    if (stamped && seen.empty()) seen.assign(n, 0);
+    const auto add_end = [&](std::uint32_t u, std::uint32_t v) {
+      if (v <= u) return;
+      if (stamped) {
+        if (seen[v] == u + 1) return;
+        seen[v] = u + 1;
+      }
+      ends.push_back(v);
+    };
     for (std::uint32_t u = v0; u < v1; ++u) {
       recs.clear();
       ends.clear();
@@ -131,8 +146,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
               recs.push_back({std::min(o[0], o[1]), std::max(o[0], o[1]),
                               t * 4 + static_cast<std::uint32_t>(f), odd(face_of(q, f))});
           }
-          for (std::uint32_t v : q)
-            if (v > u && seen[v] != u + 1) seen[v] = u + 1, ends.push_back(v);
+          for (std::uint32_t v : q) add_end(u, v);
           continue;
         }
         for (int f = 0; f < 4; ++f) {
@@ -140,8 +154,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
           if (s[0] == u)
             recs.push_back({s[1], s[2], t * 4 + static_cast<std::uint32_t>(f), odd(face_of(q, f))});
         }
-        for (std::uint32_t v : q)
-          if (v > u && seen[v] != u + 1) seen[v] = u + 1, ends.push_back(v);
+        for (std::uint32_t v : q) add_end(u, v);
       }
       std::sort(recs.begin(), recs.end());
       for (std::size_t i = 0; i < recs.size();) {
@@ -155,6 +168,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads) {
         i = j;
       }
       std::sort(ends.begin(), ends.end());
+      if (!stamped) ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
       for (std::uint32_t v : ends) part.edges.push_back(edge_key(u, v));
     }
   });

@@ -65,6 +65,9 @@ struct Topology {
 };
 
 Topology build_topology(std::span<const Tet> tets, unsigned threads);
+// As above, with per-thread stamp arrays (one entry per vertex) only while threads x
+// vertices <= stamp_entries (the default allows 2^28); 0 always sorts repeats away.
+Topology build_topology(std::span<const Tet> tets, unsigned threads, std::size_t stamp_entries);
 
 inline std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) {
   if (u > v) std::swap(u, v);

@@ -139,7 +139,8 @@ std::vector<std::uint32_t> hilbert_tet_order(const TetStore& s, std::span<const 
   for (std::size_t i = 0; i < tets.size(); ++i) {
     const VertexId* v = s.vertices(tets[i]);
     for (int k = 0; k < 3; ++k) {
-      const double c = (pts[v[0]][k] + pts[v[1]][k] + pts[v[2]][k] + pts[v[3]][k]) / 4;
+      // A quarter of each: their sum stays finite whatever the coordinates.
+      const double c = pts[v[0]][k] / 4 + pts[v[1]][k] / 4 + pts[v[2]][k] / 4 + pts[v[3]][k] / 4;
       centroid[i][k] = c;
       lo[k] = i == 0 ? c : std::min(lo[k], c);
       hi[k] = i == 0 ? c : std::max(hi[k], c);

@@ -14,7 +14,11 @@
 #include <sched.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <string>
+#include <thread>
 
 namespace pdr::par {
 
@@ -28,13 +32,23 @@ inline bool use_every_cpu() {
   return sched_setaffinity(0, sizeof all, &all) == 0;
 }
 
-// The CPUs this thread may run on now (at least 1): the checker's default thread count,
-// read when the check starts (after use_every_cpu() on rank 0 of a parallel run).
+// The CPUs this thread may run on now, within a cgroup v2 CPU quota (a container's
+// --cpus), in 1..256: the checker's default thread count, read when the check starts
+// (after use_every_cpu() on rank 0 of a parallel run).
 inline unsigned usable_cpus() {
+  unsigned n = std::thread::hardware_concurrency();  // when the mask cannot be read
   cpu_set_t mine;
   CPU_ZERO(&mine);
-  if (sched_getaffinity(0, sizeof mine, &mine) != 0) return 1;
-  return static_cast<unsigned>(std::max(1, CPU_COUNT(&mine)));
+  if (sched_getaffinity(0, sizeof mine, &mine) == 0) n = static_cast<unsigned>(CPU_COUNT(&mine));
+  if (std::ifstream max("/sys/fs/cgroup/cpu.max"); max) {  // "QUOTA PERIOD" or "max PERIOD"
+    std::string quota;
+    double period = 0;
+    if (max >> quota >> period && quota != "max" && period > 0) {
+      const double cpus = std::ceil(std::atof(quota.c_str()) / period);
+      n = std::min(n, static_cast<unsigned>(std::clamp(cpus, 1.0, 256.0)));
+    }
+  }
+  return std::clamp(n, 1u, 256u);
 }
 
 }  // namespace pdr::par

@@ -1,10 +1,11 @@
 // use_every_cpu() (par/affinity.hpp): a thread bound to one CPU, as mpirun binds a rank,
 // gets back every CPU the process was allowed, and a thread it starts afterwards has them
-// too.
+// too; usable_cpus() counts the mask.
 #include "par/affinity.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <thread>
 
@@ -34,6 +35,22 @@ TEST(Affinity, BoundThreadGetsEveryAllowedCpuBack) {
   int in_thread = 0;
   std::thread([&] { in_thread = allowed_cpus(); }).join();
   EXPECT_GE(in_thread, before);
+}
+
+// The checker's default threads: the CPUs of the mask (within a quota), 1 when bound to one.
+TEST(Affinity, UsableCpusFollowsTheMask) {
+  cpu_set_t saved;
+  ASSERT_EQ(sched_getaffinity(0, sizeof saved, &saved), 0);
+  EXPECT_GE(usable_cpus(), 1u);
+  EXPECT_LE(usable_cpus(), static_cast<unsigned>(std::min(CPU_COUNT(&saved), 256)));
+  int first = 0;
+  while (!CPU_ISSET(first, &saved)) ++first;
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  EXPECT_EQ(usable_cpus(), 1u);
+  ASSERT_EQ(sched_setaffinity(0, sizeof saved, &saved), 0);
 }
 
 // PDR_KEEP_BINDING: the binding a user asked for stays.
