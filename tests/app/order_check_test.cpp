@@ -52,20 +52,26 @@ TEST(OrderCheck, TheFlippedBipyramidIsFound) {
   EXPECT_EQ(r.first.front(), (std::array<std::uint32_t, 4>{0, 1, 3, 4}));
 }
 
-// A kernel-built Delaunay tetrahedralization of a grid with jitter passes for several
-// seeds; changing one tet's vertex to a non-Delaunay quadruple is found.
-TEST(OrderCheck, KernelMeshPassesAndOneForeignTetIsFound) {
+// The kernel's Delaunay tetrahedralization of an n^3 grid with a deterministic jitter,
+// vertex ids as given.
+MeshData jittered_grid_dt(int n) {
   std::vector<Point> pts;
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j)
-      for (int k = 0; k < 6; ++k)
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
         pts.push_back({i + 0.001 * ((i * 7 + j * 3 + k) % 5), j + 0.0013 * ((i + j * 5) % 7),
                        k + 0.0007 * ((j + k * 3) % 11)});
   Delaunay dt(pts);
   BulkOptions o;
   o.renumber = false;
-  ASSERT_EQ(bulk_insert(dt, o).status, BulkStatus::Ok);
-  MeshData m = to_mesh_data(dt);
+  EXPECT_EQ(bulk_insert(dt, o).status, BulkStatus::Ok);
+  return to_mesh_data(dt);
+}
+
+// A kernel-built Delaunay tetrahedralization of a grid with jitter passes for several
+// seeds; changing one tet's vertex to a non-Delaunay quadruple is found.
+TEST(OrderCheck, KernelMeshPassesAndOneForeignTetIsFound) {
+  MeshData m = jittered_grid_dt(6);
   for (std::uint64_t seed : {5u, 6u}) EXPECT_TRUE(check_order_independence(m, seed).ok());
   m.tets[0][0] = m.tets[0][0] == 0 ? 215u : 0u;  // far from the tet's other vertices
   EXPECT_EQ(check_order_independence(m, 5).missing, 1u);
@@ -74,17 +80,7 @@ TEST(OrderCheck, KernelMeshPassesAndOneForeignTetIsFound) {
 // The misses are looked up in blocks on several threads: the count and the first listed
 // (in mesh order) are the same for any number of threads.
 TEST(OrderCheck, TheMissesListedDoNotDependOnThreads) {
-  std::vector<Point> pts;
-  for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 8; ++j)
-      for (int k = 0; k < 8; ++k)
-        pts.push_back({i + 0.001 * ((i * 7 + j * 3 + k) % 5), j + 0.0013 * ((i + j * 5) % 7),
-                       k + 0.0007 * ((j + k * 3) % 11)});
-  Delaunay dt(pts);
-  BulkOptions o;
-  o.renumber = false;
-  ASSERT_EQ(bulk_insert(dt, o).status, BulkStatus::Ok);
-  MeshData m = to_mesh_data(dt);
+  MeshData m = jittered_grid_dt(8);
   std::size_t changed = 0;
   for (std::size_t t = 0; t < m.tets.size(); t += 37, ++changed)
     m.tets[t][0] = m.tets[t][0] == 0 ? 511u : 0u;  // far from the tet's other vertices

@@ -19,16 +19,21 @@ int allowed_cpus() {
   return CPU_COUNT(&s);
 }
 
-TEST(Affinity, BoundThreadGetsEveryAllowedCpuBack) {
-  const int before = allowed_cpus();
+// Binds the calling thread to the first CPU of `mask`, as mpirun binds a rank.
+void bind_to_first(const cpu_set_t& mask) {
+  int first = 0;
+  while (!CPU_ISSET(first, &mask)) ++first;
   cpu_set_t one;
   CPU_ZERO(&one);
-  ASSERT_EQ(sched_getaffinity(0, sizeof one, &one), 0);
-  int first = 0;
-  while (!CPU_ISSET(first, &one)) ++first;
-  CPU_ZERO(&one);
   CPU_SET(first, &one);
-  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);  // as mpirun's binding
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+}
+
+TEST(Affinity, BoundThreadGetsEveryAllowedCpuBack) {
+  const int before = allowed_cpus();
+  cpu_set_t all;
+  ASSERT_EQ(sched_getaffinity(0, sizeof all, &all), 0);
+  bind_to_first(all);
   ASSERT_EQ(allowed_cpus(), 1);
   EXPECT_TRUE(use_every_cpu());
   EXPECT_GE(allowed_cpus(), before);
@@ -43,12 +48,7 @@ TEST(Affinity, UsableCpusFollowsTheMask) {
   ASSERT_EQ(sched_getaffinity(0, sizeof saved, &saved), 0);
   EXPECT_GE(usable_cpus(), 1u);
   EXPECT_LE(usable_cpus(), static_cast<unsigned>(std::min(CPU_COUNT(&saved), 256)));
-  int first = 0;
-  while (!CPU_ISSET(first, &saved)) ++first;
-  cpu_set_t one;
-  CPU_ZERO(&one);
-  CPU_SET(first, &one);
-  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  bind_to_first(saved);
   EXPECT_EQ(usable_cpus(), 1u);
   ASSERT_EQ(sched_setaffinity(0, sizeof saved, &saved), 0);
 }
@@ -57,12 +57,7 @@ TEST(Affinity, UsableCpusFollowsTheMask) {
 TEST(Affinity, KeepBindingLeavesTheMask) {
   cpu_set_t saved;
   ASSERT_EQ(sched_getaffinity(0, sizeof saved, &saved), 0);
-  int first = 0;
-  while (!CPU_ISSET(first, &saved)) ++first;
-  cpu_set_t one;
-  CPU_ZERO(&one);
-  CPU_SET(first, &one);
-  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  bind_to_first(saved);
   setenv("PDR_KEEP_BINDING", "1", 1);
   EXPECT_FALSE(use_every_cpu());
   unsetenv("PDR_KEEP_BINDING");
