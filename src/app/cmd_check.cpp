@@ -84,7 +84,7 @@ int run_check(const CheckArgs& args) {
   check::Options opt;
   opt.ratio_bound = args.ratio;
   opt.min_edge = args.h;
-  const unsigned threads = args.threads > 0 ? args.threads : par::usable_cpus();
+  const unsigned threads = par::threads_or_usable(args.threads);
   opt.threads = threads;
   set_check_tolerances(args.planarity_tolerance, domain ? &*domain : nullptr, opt);
   if (progress.enabled())

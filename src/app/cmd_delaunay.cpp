@@ -37,7 +37,7 @@ int run_delaunay(const DelaunayArgs& args) {
   timer.lap("read");
   const int code = triangulate_write_check(std::move(points), args.points, args.prefix,
                                            formats, args.check,
-                                           args.threads > 0 ? args.threads : par::usable_cpus(),
+                                           par::threads_or_usable(args.threads),
                                            timer, summary);
   summary.print(args.json);
   return code;

@@ -279,7 +279,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
       static_cast<std::size_t>(std::count(an.domain.cell_inside.begin(), an.domain.cell_inside.end(), 1)));
   // Remarks 1-2 (the order check, below): DT(V) is rebuilt on another thread from here,
   // while the summary is made, the files are written and the checker runs.
-  const unsigned threads = args.threads > 0 ? args.threads : par::usable_cpus();
+  const unsigned threads = par::threads_or_usable(args.threads);
   std::future<RebuiltDt> rebuilt;
   if (args.check) rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, threads > 1);
   summary.set("vertices", mesh.points.size());

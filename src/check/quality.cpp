@@ -23,8 +23,6 @@ namespace {
 
 double mid(const Interval& x) { return 0.5 * x.lo + 0.5 * x.hi; }
 
-Interval squared_length(const Point& a, const Point& b) { return squared_distance(a, b); }
-
 }  // namespace
 
 CheckResult check_radius_edge_ratio(const Context& c) {
@@ -53,10 +51,10 @@ CheckResult check_radius_edge_ratio(const Context& c) {
       const Tet& k = tets[t];
       const std::array<const Point*, 4> p = {&pts[k[0]], &pts[k[1]], &pts[k[2]], &pts[k[3]]};
       // The minimum of the six squared lengths lies in [min of lows, min of highs].
-      Interval l2 = squared_length(*p[0], *p[1]);
+      Interval l2 = squared_distance(*p[0], *p[1]);
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j) {
-          const Interval x = squared_length(*p[i], *p[j]);
+          const Interval x = squared_distance(*p[i], *p[j]);
           l2 = {std::min(l2.lo, x.lo), std::min(l2.hi, x.hi)};
         }
       const Interval R2 = t < c.circum_r2.size() ? c.circum_r2[t]
@@ -121,7 +119,7 @@ CheckResult check_shortest_edge(const Context& c) {
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto u = static_cast<std::uint32_t>(edges[i] >> 32), v = static_cast<std::uint32_t>(edges[i]);
     ++r.checked;
-    const Interval l2 = squared_length(pts[u], pts[v]);
+    const Interval l2 = squared_distance(pts[u], pts[v]);
     const double len = std::sqrt(mid(l2));
     if (len < shortest) shortest = len, shortest_edge = i;
     if (!bounded) continue;

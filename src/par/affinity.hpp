@@ -51,4 +51,9 @@ inline unsigned usable_cpus() {
   return std::clamp(n, 1u, 256u);
 }
 
+// The threads a user asked for (--threads), or usable_cpus() when none (0).
+inline unsigned threads_or_usable(unsigned requested) {
+  return requested > 0 ? requested : usable_cpus();
+}
+
 }  // namespace pdr::par
