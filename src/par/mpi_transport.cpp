@@ -22,7 +22,15 @@ void check(int rc, const char* what) {
 
 }  // namespace
 
+const char* single_host_pml() {
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  if (size == nullptr || local == nullptr || std::getenv("OMPI_MCA_pml") != nullptr) return nullptr;
+  return std::atoi(size) > 0 && std::atoi(size) == std::atoi(local) ? "ob1" : nullptr;
+}
+
 MpiSession::MpiSession(int* argc, char*** argv) {
+  if (const char* pml = single_host_pml()) setenv("OMPI_MCA_pml", pml, 0);
   int provided = 0;
   check(MPI_Init_thread(argc, argv, MPI_THREAD_SINGLE, &provided), "MPI_Init_thread");
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);

@@ -37,6 +37,15 @@ class MpiSession {
   int rank_ = 0, size_ = 1;
 };
 
+// Open MPI's messaging layer for a run whose ranks all share one host (the launcher's
+// OMPI_COMM_WORLD_LOCAL_SIZE equals OMPI_COMM_WORLD_SIZE): "ob1", whose shared-memory
+// transport is what such a run uses anyway, unless the user chose one (OMPI_MCA_pml set,
+// even empty). Left to Open MPI's own choice, MPI_Init first starts UCX, which then finds
+// no network to use: about 0.2 s of every run on one host. MpiSession sets it in the
+// environment before MPI_Init; runs over several hosts keep Open MPI's choice. Returns
+// nullptr where nothing is to be set.
+const char* single_host_pml();
+
 // True when this process was started by an MPI launcher (mpirun, mpiexec, srun): the
 // launchers' environment variables are set.
 bool launched_by_mpi();
