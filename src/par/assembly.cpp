@@ -7,6 +7,7 @@
 #include <system_error>
 #include <thread>
 #include <tuple>
+#include <unordered_set>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +19,40 @@
 #include "surface/split.hpp"
 
 namespace pdr::par {
+namespace {
+
+// Runs work(w) for w in [0, workers) on as many threads (this one is worker 0; fewer when
+// no thread is to be had: work(w) must then leave worker w's share to the others, as a
+// shared counter does) and rethrows the first exception once all have ended.
+template <class Work>
+void on_workers(std::size_t workers, Work work) {
+  std::vector<std::exception_ptr> errors(workers);
+  const auto guarded = [&](std::size_t w) {
+    try {
+      work(w);
+    } catch (...) {
+      errors[w] = std::current_exception();
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t w = 1; w < workers; ++w) {
+      try {
+        pool.emplace_back(guarded, w);
+      } catch (const std::system_error&) {
+        for (std::size_t rest = w; rest < workers; ++rest) guarded(rest);  // on this thread
+        break;
+      }
+    }
+    guarded(0);
+  }
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+std::size_t cores() { return std::max<std::size_t>(1, std::thread::hardware_concurrency()); }
+
+}  // namespace
 
 Piece piece_of(const Submesh& s) {
   const TetStore& st = s.store();
@@ -170,34 +205,19 @@ Assembled Assembly::finish(refine::VolumeMesh& m, std::span<const SurfaceStep> s
   for (std::size_t p = 0; p < added_.size(); ++p)
     for (std::size_t b = 0; b < added_[p].piece.tet_count(); b += kBlock)
       blocks.push_back({p, b, std::min(added_[p].piece.tet_count(), b + kBlock)});
-  const std::size_t workers =
-      std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, std::max<std::size_t>(1, blocks.size()));
+  const std::size_t workers = std::clamp<std::size_t>(cores(), 1, std::max<std::size_t>(1, blocks.size()));
   std::vector<std::vector<OpenFace>> open(workers);
   std::vector<std::vector<TetId>> deferred(workers);
-  std::vector<std::exception_ptr> errors(workers);
   std::atomic<std::size_t> next{0};
-  const auto work = [&](std::size_t w) {
+  on_workers(workers, [&](std::size_t w) {
     try {
       for (std::size_t b; (b = next.fetch_add(1)) < blocks.size();)
         write_tets(added_[blocks[b].piece], blocks[b].begin, blocks[b].end, open[w], deferred[w]);
     } catch (...) {
-      errors[w] = std::current_exception();
-      next = blocks.size();
+      next = blocks.size();  // the others stop too
+      throw;
     }
-  };
-  {
-    std::vector<std::jthread> pool;
-    for (std::size_t w = 1; w < workers; ++w) {
-      try {
-        pool.emplace_back(work, w);
-      } catch (const std::system_error&) {
-        break;  // no thread to be had: the others take its blocks
-      }
-    }
-    work(0);
-  }
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  });
   std::vector<OpenFace> faces;
   for (std::size_t w = 0; w < workers; ++w) {
     faces.insert(faces.end(), open[w].begin(), open[w].end());
@@ -284,18 +304,37 @@ std::size_t Assembly::change_d(refine::VolumeMesh& m, std::span<const SurfaceSte
     if (later.size() == todo.size()) fail("subfacets whose vertices were never made");
     todo.swap(later);
   }
-  // Once D has them all (T has every new vertex already).
-  refine::EncroachedLists missing, encroached;
-  std::vector<TetId> star;
-  for (const SurfaceStep& r : steps) {
-    const VertexId v = vertex(r.m);
-    refine::vertex_star(m, v, fresh_tet_[v - n0_], star);
-    refine::missing_at(m, v, star, missing);
-    refine::find_encroached(m, star, encroached);
+  // Once D has them all (T has every new vertex already). Read-only, so the steps are
+  // shared out in runs over every core, and the runs' lists joined in step order: the
+  // same lists as one pass gives (missing_at lists an element once, find_encroached each
+  // time it is met).
+  struct Found {
+    refine::EncroachedLists missing;
+    std::size_t encroached = 0;
+  };
+  const std::size_t workers = std::clamp<std::size_t>(cores(), 1, std::max<std::size_t>(1, steps.size() / 1024));
+  std::vector<Found> found(workers);
+  on_workers(workers, [&](std::size_t w) {
+    std::vector<TetId> star;
+    refine::EncroachedLists encroached;
+    for (std::size_t i = steps.size() * w / workers; i < steps.size() * (w + 1) / workers; ++i) {
+      const VertexId v = vertex(steps[i].m);
+      refine::vertex_star(m, v, fresh_tet_[v - n0_], star);
+      refine::missing_at(m, v, star, found[w].missing);
+      refine::find_encroached(m, star, encroached);
+    }
+    found[w].encroached = encroached.subsegments.size() + encroached.subfacets.size();
+  });
+  std::unordered_set<std::uint32_t> listed_subsegments, listed_subfacets;
+  std::size_t encroached = 0;
+  for (const Found& f : found) {
+    for (const refine::Encroached& e : f.missing.subsegments)
+      if (listed_subsegments.insert(e.id).second) m.missing_subsegments.push_back(e.id);
+    for (const refine::Encroached& e : f.missing.subfacets)
+      if (listed_subfacets.insert(e.id).second) m.missing_subfacets.push_back(e.id);
+    encroached += f.encroached;
   }
-  for (const refine::Encroached& e : missing.subsegments) m.missing_subsegments.push_back(e.id);
-  for (const refine::Encroached& e : missing.subfacets) m.missing_subfacets.push_back(e.id);
-  return encroached.subsegments.size() + encroached.subfacets.size();
+  return encroached;
 }
 
 Assembled assemble(refine::VolumeMesh& m, std::span<const Piece> pieces,
