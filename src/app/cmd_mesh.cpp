@@ -59,6 +59,13 @@ void check_range(const Plc& plc) {
 // them; oriented out of their lower tet slot); with region records in the input, or
 // several regions (internal facets, or `cells` > 1: bodies apart, or touching along an
 // edge), each tet's region attribute too (app/regions.hpp; TetGen's -A).
+// Whether the tets get region attributes (export_domain).
+bool needs_regions(const refine::VolumeMesh& m, const Plc& plc, std::size_t cells) {
+  const auto& facets = m.surf.facets;
+  return !plc.regions.empty() || cells > 1 ||
+         std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; });
+}
+
 MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc, std::size_t cells) {
   MeshData mesh = to_mesh_data(m.dt, m.inside);
   const auto& facets = m.surf.facets;
@@ -237,11 +244,23 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                                formats.end();
   VertexOwners owners;
   std::optional<refine::QualityRange> ranks_quality;  // the ranks' figures, when whole
+  // Bodies apart (or touching along an edge): several regions even without region
+  // records or internal facets (export_domain).
+  const auto cells = static_cast<std::size_t>(
+      std::count(an.domain.cell_inside.begin(), an.domain.cell_inside.end(), 1));
+  // The ranks may list the output mesh themselves where it needs no region attributes
+  // (app/parallel.hpp).
+  std::optional<Listing> listing;
+  if (!needs_regions(vm, an.domain.plc, cells)) {
+    listing.emplace();
+    for (const auto& f : an.domain.plc.facets) listing->facet_markers.push_back(f.marker);
+  }
+  std::optional<ListedMesh> listed;
   std::optional<refine::RefineResult> refined =
       world().size > 1 ? refine_in_parallel(vm, opt, args.initial_tets, args.submeshes,
                                             args.inject_latency_us, args.seed, summary, timer,
                                             t_before, partitioned ? &owners : nullptr,
-                                            ranks_quality)
+                                            ranks_quality, listing ? &*listing : nullptr, listed)
                        : refine::refine(vm, opt);
   if (!refined) return kExitOk;  // not rank 0: rank 0 writes, checks and decides the code
   const refine::RefineResult& rr = *refined;
@@ -274,9 +293,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                              " Lemma 1 failures (inadmissible domain); first: " +
                              rr.stats.audit_note);
 
-  MeshData mesh = export_domain(
-      vm, an.domain.plc,
-      static_cast<std::size_t>(std::count(an.domain.cell_inside.begin(), an.domain.cell_inside.end(), 1)));
+  MeshData mesh = listed ? std::move(listed->mesh) : export_domain(vm, an.domain.plc, cells);
   // Remarks 1-2 (the order check, below): DT(V) is rebuilt on another thread from here,
   // while the summary is made, the files are written and the checker runs.
   const unsigned threads = par::threads_or_usable(args.threads);
@@ -287,7 +304,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   summary.set("boundary_faces", mesh.faces.size());
   summary.set("tets_per_second",
               t_refine > 0 ? static_cast<double>(mesh.tets.size()) / t_refine : 0.0);
-  summary.set("topology_bytes", vm.dt.store().bytes_allocated());
+  summary.set("topology_bytes", listed ? listed->topology_bytes : vm.dt.store().bytes_allocated());
   if (ranks_quality && ranks_quality->tets != mesh.tets.size())
     throw std::logic_error("the ranks' quality figures cover " +
                            std::to_string(ranks_quality->tets) + " tets, the mesh has " +
@@ -337,7 +354,8 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   if (partitioned) {
     // One piece per rank, the owner as a cell field (app/partitioned_output.hpp).
     nlohmann::json written = summary.get("written");
-    for (const std::string& p : write_partitioned_vtu(mesh, tet_owners(mesh, owners), owners.parts, args.prefix))
+    const std::vector<std::uint32_t> tet_rank = listed ? std::move(listed->tet_rank) : tet_owners(mesh, owners);
+    for (const std::string& p : write_partitioned_vtu(mesh, tet_rank, world().size, args.prefix))
       written.push_back(p);
     summary.set("written", written);
     timer.lap("write");

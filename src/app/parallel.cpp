@@ -8,15 +8,18 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "par/affinity.hpp"
 #include "par/assembly.hpp"
+#include "par/mesh_parts.hpp"
 #include "par/mpi_collect.hpp"
 #include "par/mpi_transport.hpp"
 #include "par/par_refinement.hpp"
 #include "par/partition.hpp"
+#include "refine/budget.hpp"
 
 namespace pdr::app {
 namespace {
@@ -164,7 +167,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,
                                                        VertexOwners* owners,
-                                                       std::optional<refine::QualityRange>& quality) {
+                                                       std::optional<refine::QualityRange>& quality,
+                                                       const Listing* listing,
+                                                       std::optional<ListedMesh>& listed) {
   const World w = world();
   // M_o: the same on every rank.
   // Steps on ∂Ω in the phase where D's changes are exact (par/refinement_rules.hpp).
@@ -185,6 +190,14 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   std::vector<std::byte> pieces;
   std::vector<par::SurfaceStep> d_steps;  // the phase's steps on ∂Ω, all ranks'
   std::vector<par::RankFigures> figures;
+  // The ranks' parts of the mesh, joined at rank 0 (par/mesh_parts.hpp).
+  struct Joined {
+    std::vector<Point> points;        // the phase's, in vertex-number order
+    MeshData mesh;                    // tets, faces and markers
+    std::vector<std::uint64_t> sizes;  // per rank: its tets, its stores' bytes
+    std::size_t vertices = 0;
+  };
+  std::optional<Joined> joined;
   par::Partition part;
   // More submeshes than M_o can give (METIS would leave one empty): one per rank instead;
   // fewer tets than ranks: rank 0 refines alone. Every rank decides alike (same M_o, seed).
@@ -220,12 +233,47 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         }
       }
       seconds += timer.lap("parallel");
-      if (owners != nullptr) points = par::gather_points(mine.points);
-      pieces = par::gather_bytes(mine.pieces);
-      const std::vector<std::byte> step_bytes =
-          par::gather_bytes(std::as_bytes(std::span(mine.surface_steps)));
-      d_steps.resize(step_bytes.size() / sizeof(par::SurfaceStep));
-      if (!step_bytes.empty()) std::memcpy(d_steps.data(), step_bytes.data(), step_bytes.size());
+      // The ranks list the mesh themselves when the completion would have nothing to do
+      // (par/mesh_parts.hpp): the completion would resume the phase's run (M_o met
+      // Theorem 1's hypotheses), an admissible one (no guards), no step was deferred and
+      // each part is final. Every rank learns the verdict and every submesh's count of
+      // made vertices (the vertex numbers) in one sum.
+      bool final_here = listing != nullptr && opt.admissible && coarse.stats.h_theorem > 0;
+      for (const par::Submesh& sub : mine.submeshes) final_here = final_here && par::part_is_final(sub);
+      std::vector<std::uint64_t> sums(1 + part.parts, 0);
+      sums[0] = final_here ? 0 : 1;
+      for (std::size_t i = 0; i < mine.made.size(); ++i)
+        sums[1 + static_cast<std::size_t>(w.rank) + i * static_cast<std::size_t>(w.size)] = mine.made[i];
+      sums = par::sum_over_ranks(sums);
+      if (sums[0] == 0) {
+        const par::VertexNumbers num(vm.dt.num_points(), std::span(sums).subspan(1), w.size);
+        MeshData mesh;
+        std::uint64_t bytes = 0;
+        for (const par::Submesh& sub : mine.submeshes) {
+          par::add_part(sub, num, listing->facet_markers, mesh, mine.figures.quality);
+          bytes += sub.store().bytes_allocated();
+        }
+        std::vector<par::Submesh>().swap(mine.submeshes);
+        joined.emplace();
+        joined->points = par::gather_values(mine.points);
+        joined->mesh.tets = par::gather_values(mesh.tets);
+        joined->mesh.faces = par::gather_values(mesh.faces);
+        joined->mesh.face_markers = par::gather_values(mesh.face_markers);
+        joined->sizes = par::gather_values(std::vector<std::uint64_t>{mesh.tets.size(), bytes});
+        joined->vertices = num.total();
+      } else {
+        mine.figures.quality = par::quality_of(mine.submeshes);
+        {
+          const par::Bytes mine_pieces = par::pieces_of(mine.submeshes);
+          std::vector<par::Submesh>().swap(mine.submeshes);
+          pieces = par::gather_bytes(mine_pieces);
+        }
+        if (owners != nullptr) points = par::gather_points(mine.points);
+        const std::vector<std::byte> step_bytes =
+            par::gather_bytes(std::as_bytes(std::span(mine.surface_steps)));
+        d_steps.resize(step_bytes.size() / sizeof(par::SurfaceStep));
+        if (!step_bytes.empty()) std::memcpy(d_steps.data(), step_bytes.data(), step_bytes.size());
+      }
       figures = par::gather_figures(mine.figures);
       seconds += timer.lap("gather");
     } catch (const std::exception& e) {
@@ -238,6 +286,66 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // The other ranks are done; they sleep until rank 0 says how the run ended, so rank 0's
   // threads (the writers', the checker's) may use their cores (par/affinity.hpp).
   par::use_every_cpu();
+  // Table 1 and the run's parallel figures (docs/parallel.md); `absorbed`: the vertices
+  // the phase added to M_o.
+  const auto report = [&](std::size_t absorbed) {
+    std::uint64_t committed = 0;
+    for (const par::RankFigures& f : figures) committed += f.points;
+    nlohmann::json ranks = nlohmann::json::array();
+    double slowest = 0;
+    std::size_t worst = 0;
+    for (std::size_t r = 0; r < figures.size(); ++r) {
+      ranks.push_back(figures_json(static_cast<int>(r), figures[r]));
+      slowest = std::max(slowest, figures[r].seconds);
+      if (figures[r].seconds > figures[worst].seconds) worst = r;
+    }
+    summary.set("parallel", nlohmann::json{{"schema_version", 3},
+                                           {"worst_rank", figures.empty() ? nlohmann::json(nullptr)
+                                                                          : nlohmann::json(worst)},
+                                           {"ranks", w.size},
+                                           {"submeshes", distribute ? part.parts : 0u},
+                                           {"injected_latency_us", latency_us},
+                                           {"distributed", distribute},
+                                           {"partition_note", partition_note},
+                                           {"initial_tets", m0_tets},
+                                           {"points", committed},
+                                           {"points_absorbed", absorbed},
+                                           {"listed_by_ranks", joined.has_value()},
+                                           {"slowest_rank_seconds", slowest},
+                                           {"per_rank", ranks}});
+    if (!figures.empty()) print_table(figures);
+  };
+  if (joined) {
+    // The mesh is the ranks' parts joined: M_o's points, then the phase's, numbered as
+    // the parts number them; the completion would have changed nothing, so its result is
+    // what it would have returned (RefineOptions::resumed_h, no start tets).
+    ListedMesh& out = listed.emplace();
+    out.mesh.points.reserve(joined->vertices);
+    out.mesh.points.assign(vm.dt.points().begin(), vm.dt.points().end());
+    out.mesh.points.insert(out.mesh.points.end(), joined->points.begin(), joined->points.end());
+    if (out.mesh.points.size() != joined->vertices)
+      throw std::logic_error("the ranks' parts list " + std::to_string(out.mesh.points.size()) +
+                             " points, their numbers " + std::to_string(joined->vertices));
+    out.mesh.tets = std::move(joined->mesh.tets);
+    out.mesh.faces = std::move(joined->mesh.faces);
+    out.mesh.face_markers = std::move(joined->mesh.face_markers);
+    for (std::size_t r = 0; r * 2 + 1 < joined->sizes.size(); ++r) {
+      out.tet_rank.insert(out.tet_rank.end(), joined->sizes[2 * r], static_cast<std::uint32_t>(r));
+      out.topology_bytes += joined->sizes[2 * r + 1];
+    }
+    if (out.tet_rank.size() != out.mesh.tets.size())
+      throw std::logic_error("the ranks' parts: tet counts do not add up");
+    seconds += timer.lap("join");
+    report(joined->vertices - vm.dt.num_points());
+    refine::RefineResult rr;
+    rr.stats.h = std::numeric_limits<double>::infinity();
+    rr.stats.h_theorem = refine::theorem_h(shortest_t0, opt);
+    rr.stats.vertex_cap = refine::VertexBudget(out.mesh.points, opt).cap();
+    rr.tets_unchanged = true;
+    quality.emplace();
+    for (const par::RankFigures& f : figures) quality->merge(f.quality);
+    return rr;
+  }
   if (owners != nullptr) {
     owners->parts = w.size;
     if (distribute) {
@@ -266,31 +374,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     std::vector<std::byte>().swap(pieces);
   }
   seconds += timer.lap("assemble");
-  std::uint64_t committed = 0;
-  for (const par::RankFigures& f : figures) committed += f.points;
-  nlohmann::json ranks = nlohmann::json::array();
-  double slowest = 0;
-  for (std::size_t r = 0; r < figures.size(); ++r) {
-    ranks.push_back(figures_json(static_cast<int>(r), figures[r]));
-    slowest = std::max(slowest, figures[r].seconds);
-  }
-  std::size_t worst = 0;
-  for (std::size_t r = 0; r < figures.size(); ++r)
-    if (figures[r].seconds > figures[worst].seconds) worst = r;
-  summary.set("parallel", nlohmann::json{{"schema_version", 3},
-                                         {"worst_rank", figures.empty() ? nlohmann::json(nullptr)
-                                                                        : nlohmann::json(worst)},
-                                         {"ranks", w.size},
-                                         {"submeshes", distribute ? part.parts : 0u},
-                                         {"injected_latency_us", latency_us},
-                                         {"distributed", distribute},
-                                         {"partition_note", partition_note},
-                                         {"initial_tets", m0_tets},
-                                         {"points", committed},
-                                         {"points_absorbed", assembled.added},
-                                         {"slowest_rank_seconds", slowest},
-                                         {"per_rank", ranks}});
-  if (!figures.empty()) print_table(figures);
+  report(assembled.added);
   // The completion: every bad tet the phase left is one it marked deferred (its steps
   // and arrivals are all tested, and termination leaves no queue), so only those are
   // queued at the start, not every tet tested again.

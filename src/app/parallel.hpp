@@ -14,9 +14,11 @@
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "app/partitioned_output.hpp"
 #include "app/summary.hpp"
+#include "mesh/mesh_data.hpp"
 #include "refine/seq_refinement.hpp"
 
 namespace pdr::app {
@@ -44,6 +46,19 @@ class RunAbandoned : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The output mesh as the ranks listed it from their submeshes (par/mesh_parts.hpp), in
+// place of rank 0's export of the assembled mesh.
+struct ListedMesh {
+  MeshData mesh;                        // points, inside tets, boundary faces and markers
+  std::vector<std::uint32_t> tet_rank;  // the rank that listed each tet
+  std::uint64_t topology_bytes = 0;     // the ranks' tet stores at the end
+};
+
+// What the ranks need to list it: the markers of D's facets (0 beyond).
+struct Listing {
+  std::vector<int> facet_markers;
+};
+
 // The refinement of vm by every rank of the run (world().size > 1). On rank 0: the result of
 // the completion, with the parallel figures in the summary (object "parallel") and on
 // stderr; elsewhere nullopt (rank 0 finishes the run). `seconds` gets the wall time of the
@@ -53,7 +68,10 @@ class RunAbandoned : public std::runtime_error {
 // (when given) gets, on rank 0, who made each vertex (app/partitioned_output.hpp).
 // `quality` gets, on rank 0, the quality figures of the final inside tets when the ranks
 // computed them on their submeshes (the completion then added no vertex and changed no
-// flag, so those are the mesh's tets: refine::QualityRange), else nothing.
+// flag, so those are the mesh's tets: refine::QualityRange), else nothing. With `listing`
+// (the output needs no region attributes: every facet separates the domain from its
+// outside), the ranks list the mesh themselves when the completion would have nothing to
+// do (par/mesh_parts.hpp): rank 0 then gets it in `listed`, and vm stays M_o.
 std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        const refine::RefineOptions& opt,
                                                        std::size_t initial_tets,
@@ -62,7 +80,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                                        std::uint64_t seed, Summary& summary,
                                                        PhaseTimer& timer, double& seconds,
                                                        VertexOwners* owners,
-                                                       std::optional<refine::QualityRange>& quality);
+                                                       std::optional<refine::QualityRange>& quality,
+                                                       const Listing* listing,
+                                                       std::optional<ListedMesh>& listed);
 
 // The exit code of the run, on every rank (`code` without mpirun): the code the checkpoint
 // fixed; else, past the checkpoint, rank 0's; else (no checkpoint yet: a command without

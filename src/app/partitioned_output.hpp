@@ -9,7 +9,8 @@
 // (the smallest); a vertex added by the completion to nobody. A tet belongs to the owner of
 // its lexicographically smallest committed vertex, else of its smallest M_o vertex with an
 // owner, else to rank 0: the pieces are the ranks' regions as the parallel phase left them,
-// up to the tets the completion remade.
+// up to the tets the completion remade. When the ranks listed the mesh themselves
+// (app/parallel.hpp ListedMesh), a tet belongs to the rank that listed it.
 #pragma once
 
 #include <cstdint>

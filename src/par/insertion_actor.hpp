@@ -99,6 +99,8 @@ class InsertionActor {
   bool step();
 
   const Submesh& submesh() const { return sub_; }
+  // The submesh, given up once the phase has ended (the actor is then done with).
+  Submesh release_submesh() { return std::move(sub_); }
   const InsertionStats& stats() const { return stats_; }
   bool idle() const { return !active_ && !has_ready() && delayed_.empty() && parked_.empty(); }
   // The last step() handled a message or did work of its own; a search of this rank waits

@@ -82,20 +82,6 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t
   return all;
 }
 
-namespace {
-
-template <class T>
-std::vector<T> gather_values(const std::vector<T>& mine) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  const std::vector<std::byte> b =
-      gather_bytes(std::span(reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(T)));
-  std::vector<T> out(b.size() / sizeof(T));
-  if (!b.empty()) std::memcpy(out.data(), b.data(), b.size());
-  return out;
-}
-
-}  // namespace
-
 std::vector<Point> gather_points(const std::vector<Point>& mine) { return gather_values(mine); }
 
 std::vector<RankFigures> gather_figures(const RankFigures& mine) {
@@ -107,6 +93,19 @@ int broadcast_from_root(int value) {
   check(MPI_Ibcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD, &r), "MPI_Ibcast");
   wait_asleep(r);
   return value;
+}
+
+std::vector<std::uint64_t> sum_over_ranks(const std::vector<std::uint64_t>& values) {
+  std::vector<std::uint64_t> out(values.size());
+  if (values.empty()) return out;
+  if (values.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::length_error("sum_over_ranks: too many values");
+  MPI_Request r = MPI_REQUEST_NULL;
+  check(MPI_Iallreduce(values.data(), out.data(), static_cast<int>(values.size()), MPI_UINT64_T,
+                       MPI_SUM, MPI_COMM_WORLD, &r),
+        "MPI_Iallreduce");
+  wait_asleep(r);
+  return out;
 }
 
 std::array<int, 2> max_over_ranks(std::array<int, 2> values) {

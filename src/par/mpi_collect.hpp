@@ -8,7 +8,10 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "geom/point.hpp"
@@ -25,6 +28,17 @@ std::vector<Point> gather_points(const std::vector<Point>& mine);
 std::vector<std::byte> gather_bytes(std::span<const std::byte> mine,
                                     std::size_t round_bytes = std::size_t{1} << 30);
 
+// Every rank's values, concatenated in rank order, at rank 0 (empty elsewhere).
+template <class T>
+std::vector<T> gather_values(const std::vector<T>& mine) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const std::vector<std::byte> b =
+      gather_bytes(std::as_bytes(std::span(mine.data(), mine.size())));
+  std::vector<T> out(b.size() / sizeof(T));
+  if (!b.empty()) std::memcpy(out.data(), b.data(), b.size());
+  return out;
+}
+
 // Every rank's figures, in rank order, at rank 0 (empty elsewhere).
 std::vector<RankFigures> gather_figures(const RankFigures& mine);
 
@@ -33,5 +47,9 @@ int broadcast_from_root(int value);
 
 // The element-wise maximum of `values` over the ranks, on every rank (waiting asleep).
 std::array<int, 2> max_over_ranks(std::array<int, 2> values);
+
+// The element-wise sum of `values` over the ranks (the same length on every rank), on
+// every rank (waiting asleep).
+std::vector<std::uint64_t> sum_over_ranks(const std::vector<std::uint64_t>& values);
 
 }  // namespace pdr::par

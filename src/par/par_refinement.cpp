@@ -73,14 +73,13 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   }
   f.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   f.busy_seconds = std::chrono::duration<double>(busy).count();
-  WireWriter pieces;
   for (const auto& a : actors) {
-    put_piece(pieces, piece_of(a->submesh()));
-    f.quality.merge(submesh_quality(a->submesh()));
     f.steps += a->stats();
     f.final_tets += a->submesh().real_tets();
     out.points.insert(out.points.end(), a->committed_points().begin(),
                       a->committed_points().end());
+    out.made.push_back(a->committed_points().size());
+    out.submeshes.push_back(a->release_submesh());
   }
   f.deferred = rules.deferred();
   for (const Transport* p : ports) {
@@ -92,8 +91,19 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   f.sleeps = idle.sleeps();
   f.points = out.points.size();
   out.surface_steps = rules.surface_steps();
-  out.pieces = pieces.take();
   return out;
+}
+
+Bytes pieces_of(std::span<const Submesh> submeshes) {
+  WireWriter w;
+  for (const Submesh& s : submeshes) put_piece(w, piece_of(s));
+  return w.take();
+}
+
+refine::QualityRange quality_of(std::span<const Submesh> submeshes) {
+  refine::QualityRange q;
+  for (const Submesh& s : submeshes) q.merge(submesh_quality(s));
+  return q;
 }
 
 }  // namespace pdr::par

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "par/insertion_actor.hpp"
@@ -45,11 +46,18 @@ struct RankFigures {
 refine::QualityRange submesh_quality(const Submesh& s);
 
 struct RankResult {
-  std::vector<Point> points;  // the points this rank committed
+  std::vector<Point> points;  // the points this rank committed, submesh by submesh
+  std::vector<std::uint64_t> made;  // how many of them each of its submeshes made
   std::vector<SurfaceStep> surface_steps;  // its steps on ∂Ω (a point each, above)
-  Bytes pieces;               // its submeshes' tets at the end (par/assembly.hpp), in a row
-  RankFigures figures;
+  // Its submeshes at the end (submesh rank, rank + P, ...): for the pieces
+  // (par/assembly.hpp) or the rank's part of the mesh (par/mesh_parts.hpp).
+  std::vector<Submesh> submeshes;
+  RankFigures figures;  // all but `quality`, which the caller adds from the submeshes
 };
+
+// The submeshes' tets (par/assembly.hpp), in a row, and their inside tets' quality figures.
+Bytes pieces_of(std::span<const Submesh> submeshes);
+refine::QualityRange quality_of(std::span<const Submesh> submeshes);
 
 // The parallel phase on this rank (transport t). Submesh k of part.parts >= t.size() lives
 // on rank k % t.size(): one actor each, the rank's transport itself when there are as many

@@ -7,6 +7,8 @@
 #   [-DWANT_NO_OUTPUT=ON] no file starts with OUT (nothing half-written)
 #   [-DWANT_PVTU=ON]      OUT.pvtu names NP pieces OUT_p<r>.vtu whose tets add up to the mesh's
 #   [-DWANT_SUBMESHES=n]  the parallel phase cut M_o into n submeshes
+#   [-DWANT_LISTED=ON|OFF] the ranks listed the mesh themselves (parallel.listed_by_ranks:
+#                         par/mesh_parts.hpp), or rank 0 assembled it
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 execute_process(
   COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${PDR} mesh ${DOMAIN} -o ${OUT} ${args} --json
@@ -50,6 +52,12 @@ if(WANT_SUBMESHES)
   string(JSON submeshes GET "${out}" parallel submeshes)
   if(NOT submeshes EQUAL WANT_SUBMESHES)
     message(FATAL_ERROR "parallel: ${submeshes} submeshes, expected ${WANT_SUBMESHES}\n${out}")
+  endif()
+endif()
+if(DEFINED WANT_LISTED)
+  string(JSON listed GET "${out}" parallel listed_by_ranks)
+  if((WANT_LISTED AND NOT listed) OR (NOT WANT_LISTED AND listed))
+    message(FATAL_ERROR "parallel.listed_by_ranks: ${listed}, expected ${WANT_LISTED}\n${out}")
   endif()
 endif()
 if(WANT_ONCE)

@@ -37,6 +37,7 @@
 #include "mesh/tables.hpp"
 #include "delaunay/export.hpp"
 #include "par/insertion_actor.hpp"
+#include "par/mesh_parts.hpp"
 #include "par/par_meshes.hpp"
 #include "par/par_refinement.hpp"
 #include "par/partition.hpp"
@@ -57,6 +58,24 @@ test::PointTet point_tet(const Point& a, const Point& b, const Point& c, const P
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t k = 0; k < 3; ++k) q[3 * i + k] = p[i][k];
   return q;
+}
+
+// A mesh's inside tets as sorted point tuples, and its boundary faces as their points,
+// rotated so the smallest comes first (the orientation kept), each with its marker: the
+// same lists for any numbering of the same mesh.
+using PointFace = std::pair<std::array<Point, 3>, int>;
+std::pair<std::vector<test::PointTet>, std::vector<PointFace>> canonical(const MeshData& m) {
+  std::vector<test::PointTet> tets;
+  for (const Tet& t : m.tets) tets.push_back(point_tet(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]));
+  std::sort(tets.begin(), tets.end());
+  std::vector<PointFace> faces;
+  for (std::size_t i = 0; i < m.faces.size(); ++i) {
+    std::array<Point, 3> p{m.points[m.faces[i][0]], m.points[m.faces[i][1]], m.points[m.faces[i][2]]};
+    std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+    faces.emplace_back(p, m.face_markers.empty() ? 0 : m.face_markers[i]);
+  }
+  std::sort(faces.begin(), faces.end());
+  return {tets, faces};
 }
 
 // The reference for assemble(): inserts `points` into m as the sequential kernel would:
@@ -170,6 +189,11 @@ struct SimRun {
   std::vector<std::pair<std::vector<Point>, std::uint32_t>> labels;
   InsertionStats stats;
   refine::QualityRange quality;  // the ranks' submesh_quality, merged
+  // The ranks' own listing of the mesh (par/mesh_parts.hpp), their parts joined in rank
+  // order, facet f's marker f + 1; whether every part was final; the parts' quality.
+  MeshData listed;
+  bool parts_final = true;
+  refine::QualityRange listed_quality;
 };
 
 SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed, bool surface = false) {
@@ -248,6 +272,22 @@ SimRun run_sim(const refine::VolumeMesh& m0, int ranks, std::uint64_t seed, bool
     out.stats.fetches_rejected += a->stats().fetches_rejected;
     out.stats.setbacks += a->stats().setbacks;
     out.stats.tets_sent += a->stats().tets_sent;
+  }
+  {
+    std::vector<std::uint64_t> made;
+    for (const auto& a : actors) made.push_back(a->committed_points().size());
+    const VertexNumbers num(m0.dt.num_points(), made, ranks);
+    std::vector<int> markers(m0.surf.facets.size());
+    std::iota(markers.begin(), markers.end(), 1);
+    out.listed.points.assign(m0.dt.points().begin(), m0.dt.points().end());
+    for (const auto& a : actors)
+      out.listed.points.insert(out.listed.points.end(), a->committed_points().begin(),
+                               a->committed_points().end());
+    EXPECT_EQ(out.listed.points.size(), num.total());
+    for (const auto& a : actors) {
+      out.parts_final = out.parts_final && part_is_final(a->submesh());
+      add_part(a->submesh(), num, markers, out.listed, out.listed_quality);
+    }
   }
   for (const auto& rr : rules) {
     out.steps.insert(out.steps.end(), rr->surface_steps().begin(), rr->surface_steps().end());
@@ -371,6 +411,36 @@ TEST(ParRefinement, ParallelPhaseThenCompletionGiveACheckedMesh) {
           << "seed " << seed << ": " << enc.subsegments.size() << " subsegments and "
           << enc.subfacets.size() << " subfacets encroached after the phase";
       EXPECT_EQ(assembled.encroached, 0u) << "seed " << seed;
+    }
+    // The ranks' own listing (par/mesh_parts.hpp): final exactly when the completion has
+    // nothing to do (no deferred step, nothing encroached around the phase's points on
+    // ∂Ω), and then the assembled mesh's export, tet for tet and face for face, each
+    // boundary face with its facet's marker; the same quality figures.
+    EXPECT_EQ(run.parts_final, run.stats.deferred == 0 && assembled.encroached == 0) << "seed " << seed;
+    if (surface) {
+      EXPECT_TRUE(run.parts_final) << "seed " << seed;
+    }
+    if (run.parts_final) {
+      MeshData exported = to_mesh_data(g.dt, g.inside);
+      exported.face_markers.clear();
+      for (const Tri& f : exported.faces) {
+        const auto sf = g.subfacet(f[0], f[1], f[2]);
+        exported.face_markers.push_back(sf ? static_cast<int>(g.surf.subfacet(*sf).facet) + 1 : 0);
+      }
+      const auto [tets, faces] = canonical(exported);
+      const auto [listed_tets, listed_faces] = canonical(run.listed);
+      EXPECT_EQ(listed_tets.size(), tets.size()) << "seed " << seed;
+      EXPECT_TRUE(listed_tets == tets) << "seed " << seed << ": the listed tets are not the assembled mesh's";
+      EXPECT_EQ(listed_faces.size(), faces.size()) << "seed " << seed;
+      EXPECT_TRUE(listed_faces == faces) << "seed " << seed << ": the listed faces are not the assembled mesh's";
+      std::vector<Point> a = run.listed.points, b(g.dt.points().begin(), g.dt.points().end());
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      EXPECT_TRUE(a == b) << "seed " << seed << ": the listed points are not the assembled mesh's";
+      EXPECT_EQ(run.listed_quality.tets, run.quality.tets);
+      EXPECT_EQ(run.listed_quality.ratio_max, run.quality.ratio_max);
+      EXPECT_EQ(run.listed_quality.dot_lo, run.quality.dot_lo);
+      EXPECT_EQ(run.listed_quality.shortest2, run.quality.shortest2);
     }
     EXPECT_TRUE(all_tets(g) == all_tets(m)) << "seed " << seed << ": assembly differs from insertion";
     EXPECT_EQ(g.dt.num_points(), m.dt.num_points());

@@ -1,0 +1,116 @@
+// The output mesh listed by the ranks; see par/mesh_parts.hpp.
+#include "par/mesh_parts.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "geom/encroach.hpp"
+#include "mesh/tables.hpp"
+#include "refine/volume_mesh.hpp"
+
+namespace pdr::par {
+namespace {
+
+constexpr auto kInteriorTag = static_cast<std::uint8_t>(1 + static_cast<int>(refine::VertexClass::Interior));
+
+// Whether vertex v of s may be a vertex of an element of D (its tag: M_o's vertex class,
+// or where the phase put it; 0, no tag, may be anything).
+bool may_be_on_d(const Submesh& s, VertexId v) { return s.tag(v) != kInteriorTag; }
+
+// Vertex v of s was made in the phase on ∂Ω (a subsegment midpoint or a subfacet
+// circumcenter: par/refinement_rules.hpp tags it with its class).
+bool made_on_d(const Submesh& s, VertexId v) {
+  return made_vertex(s.gid(v)).has_value() && s.tag(v) != kInteriorTag && s.tag(v) != 0;
+}
+
+// The facet of face f of real tet t (its label), or kNoLabel.
+std::uint32_t face_facet(const Submesh& s, TetId t, int f) {
+  const VertexId* v = s.store().vertices(t);
+  const auto& fv = tables::kFaceVertex[f];
+  if (!may_be_on_d(s, v[fv[0]]) || !may_be_on_d(s, v[fv[1]]) || !may_be_on_d(s, v[fv[2]]))
+    return kNoLabel;
+  return s.face_label(v[fv[0]], v[fv[1]], v[fv[2]]);
+}
+
+// An element of D of real tet t is encroached (strictly) by a vertex of t.
+bool encroached_in(const Submesh& s, TetId t) {
+  const VertexId* v = s.store().vertices(t);
+  const auto pts = s.points();
+  for (const auto& e : tables::kEdgeVertex) {
+    const VertexId a = v[e[0]], b = v[e[1]];
+    if (!may_be_on_d(s, a) || !may_be_on_d(s, b) || s.edge_label(a, b) == kNoLabel) continue;
+    for (int k = 0; k < 4; ++k)
+      if (k != e[0] && k != e[1] && in_diametral_ball(pts[a], pts[b], pts[v[k]]) == Sign::Positive)
+        return true;
+  }
+  for (int f = 0; f < 4; ++f) {
+    if (face_facet(s, t, f) == kNoLabel) continue;
+    const auto& fv = tables::kFaceVertex[f];
+    if (in_equatorial_ball(pts[v[fv[0]]], pts[v[fv[1]]], pts[v[fv[2]]], pts[v[f]]) == Sign::Positive)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+VertexNumbers::VertexNumbers(std::size_t m0_vertices, std::span<const std::uint64_t> made,
+                             int ranks)
+    : n0_(m0_vertices), made_(made.begin(), made.end()), first_(made.size(), 0) {
+  std::size_t next = n0_;
+  for (int r = 0; r < ranks; ++r)
+    for (std::size_t k = static_cast<std::size_t>(r); k < made_.size(); k += static_cast<std::size_t>(ranks)) {
+      first_[k] = next;
+      next += made_[k];
+    }
+  if (next > kGhostVertex) throw std::length_error("mesh parts: more vertices than 32-bit ids");
+  total_ = next;
+}
+
+std::uint32_t VertexNumbers::operator()(Gid g) const {
+  if (g < n0_) return static_cast<std::uint32_t>(g);
+  const auto m = made_vertex(g);
+  if (!m || m->maker >= made_.size() || m->serial >= made_[m->maker])
+    throw std::logic_error("mesh parts: vertex " + std::to_string(g) + " is no vertex of the run");
+  return static_cast<std::uint32_t>(first_[m->maker] + m->serial);
+}
+
+bool part_is_final(const Submesh& s) {
+  const TetStore& st = s.store();
+  for (TetId t = 0; t < st.slots(); ++t) {
+    if (!st.is_alive(t) || st.is_proxy(t) || st.is_ghost(t)) continue;
+    if (s.deferred(t)) return false;
+    const VertexId* v = st.vertices(t);
+    if ((made_on_d(s, v[0]) || made_on_d(s, v[1]) || made_on_d(s, v[2]) || made_on_d(s, v[3])) &&
+        encroached_in(s, t))
+      return false;
+  }
+  return true;
+}
+
+void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> facet_markers,
+              MeshData& out, refine::QualityRange& q) {
+  const TetStore& st = s.store();
+  const auto pts = s.points();
+  out.tets.reserve(out.tets.size() + s.real_tets());
+  for (TetId t = 0; t < st.slots(); ++t) {
+    if (constexpr TetId kAhead = 8; t + kAhead < st.slots())  // scattered points, meanwhile
+      for (int k = 0; k < 4; ++k)
+        if (const VertexId w = st.vertex(t + kAhead, k); w < pts.size()) __builtin_prefetch(&pts[w]);
+    if (!st.is_alive(t) || st.is_proxy(t) || st.is_ghost(t) || !s.inside(t)) continue;
+    const VertexId* v = st.vertices(t);
+    q.add(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
+    const Tet n{num(s.gid(v[0])), num(s.gid(v[1])), num(s.gid(v[2])), num(s.gid(v[3]))};
+    out.tets.push_back(n);
+    for (int f = 0; f < 4; ++f) {
+      const std::uint32_t facet = face_facet(s, t, f);
+      if (facet == kNoLabel) continue;
+      const auto& fv = tables::kFaceVertex[f];
+      out.faces.push_back({n[static_cast<std::size_t>(fv[0])], n[static_cast<std::size_t>(fv[1])],
+                           n[static_cast<std::size_t>(fv[2])]});
+      out.face_markers.push_back(facet < facet_markers.size() ? facet_markers[facet] : 0);
+    }
+  }
+}
+
+}  // namespace pdr::par
