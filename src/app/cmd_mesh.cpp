@@ -304,7 +304,12 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   summary.set("boundary_faces", mesh.faces.size());
   summary.set("tets_per_second",
               t_refine > 0 ? static_cast<double>(mesh.tets.size()) / t_refine : 0.0);
-  summary.set("topology_bytes", listed ? listed->topology_bytes : vm.dt.store().bytes_allocated());
+  // The ranks' listing: their stores at the end (proxies and spare slots included), not
+  // comparable with one assembled store.
+  if (listed)
+    summary.set("ranks_topology_bytes", listed->topology_bytes);
+  else
+    summary.set("topology_bytes", vm.dt.store().bytes_allocated());
   if (ranks_quality && ranks_quality->tets != mesh.tets.size())
     throw std::logic_error("the ranks' quality figures cover " +
                            std::to_string(ranks_quality->tets) + " tets, the mesh has " +

@@ -255,12 +255,16 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         }
         std::vector<par::Submesh>().swap(mine.submeshes);
         joined.emplace();
-        joined->points = par::gather_values(mine.points);
-        joined->mesh.tets = par::gather_values(mesh.tets);
-        joined->mesh.faces = par::gather_values(mesh.faces);
-        joined->mesh.face_markers = par::gather_values(mesh.face_markers);
         joined->sizes = par::gather_values(std::vector<std::uint64_t>{mesh.tets.size(), bytes});
         joined->vertices = num.total();
+        // Each array freed here once gathered (rank 0 then holds the whole mesh).
+        joined->points = par::gather_values(mine.points);
+        std::vector<Point>().swap(mine.points);
+        joined->mesh.tets = par::gather_values(mesh.tets);
+        std::vector<Tet>().swap(mesh.tets);
+        joined->mesh.faces = par::gather_values(mesh.faces);
+        std::vector<Tri>().swap(mesh.faces);
+        joined->mesh.face_markers = par::gather_values(mesh.face_markers);
       } else {
         mine.figures.quality = par::quality_of(mine.submeshes);
         {
@@ -310,7 +314,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                            {"initial_tets", m0_tets},
                                            {"points", committed},
                                            {"points_absorbed", absorbed},
-                                           {"listed_by_ranks", joined.has_value()},
+                                           {"listed_by_ranks", listed.has_value()},
                                            {"slowest_rank_seconds", slowest},
                                            {"per_rank", ranks}});
     if (!figures.empty()) print_table(figures);
@@ -320,12 +324,13 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     // the parts number them; the completion would have changed nothing, so its result is
     // what it would have returned (RefineOptions::resumed_h, no start tets).
     ListedMesh& out = listed.emplace();
-    out.mesh.points.reserve(joined->vertices);
+    const std::size_t vertices = joined->vertices;
+    out.mesh.points.reserve(vertices);
     out.mesh.points.assign(vm.dt.points().begin(), vm.dt.points().end());
     out.mesh.points.insert(out.mesh.points.end(), joined->points.begin(), joined->points.end());
-    if (out.mesh.points.size() != joined->vertices)
+    if (out.mesh.points.size() != vertices)
       throw std::logic_error("the ranks' parts list " + std::to_string(out.mesh.points.size()) +
-                             " points, their numbers " + std::to_string(joined->vertices));
+                             " points, their numbers " + std::to_string(vertices));
     out.mesh.tets = std::move(joined->mesh.tets);
     out.mesh.faces = std::move(joined->mesh.faces);
     out.mesh.face_markers = std::move(joined->mesh.face_markers);
@@ -333,10 +338,16 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       out.tet_rank.insert(out.tet_rank.end(), joined->sizes[2 * r], static_cast<std::uint32_t>(r));
       out.topology_bytes += joined->sizes[2 * r + 1];
     }
+    joined.reset();
     if (out.tet_rank.size() != out.mesh.tets.size())
       throw std::logic_error("the ranks' parts: tet counts do not add up");
+    // The ranks read the boundary off their labels (par/mesh_parts.hpp); a surface that
+    // does not close (labels that are not D) is an internal error, not an output.
+    if (!par::surface_closed(out.mesh.faces))
+      throw std::logic_error("the ranks' parts: their boundary faces do not close a surface "
+                             "(an edge in an odd number of them)");
     seconds += timer.lap("join");
-    report(joined->vertices - vm.dt.num_points());
+    report(vertices - vm.dt.num_points());
     refine::RefineResult rr;
     rr.stats.h = std::numeric_limits<double>::infinity();
     rr.stats.h_theorem = refine::theorem_h(shortest_t0, opt);

@@ -1,6 +1,7 @@
 // The output mesh listed by the ranks; see par/mesh_parts.hpp.
 #include "par/mesh_parts.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -111,6 +112,24 @@ void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> f
       out.face_markers.push_back(facet < facet_markers.size() ? facet_markers[facet] : 0);
     }
   }
+}
+
+bool surface_closed(std::span<const Tri> faces) {
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * faces.size());
+  for (const Tri& f : faces)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint64_t a = f[static_cast<std::size_t>(i)], b = f[static_cast<std::size_t>((i + 1) % 3)];
+      edges.push_back(std::min(a, b) << 32 | std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if ((j - i) % 2 != 0) return false;
+    i = j;
+  }
+  return true;
 }
 
 }  // namespace pdr::par

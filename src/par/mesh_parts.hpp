@@ -67,4 +67,8 @@ bool part_is_final(const Submesh& s);
 void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> facet_markers,
               MeshData& out, refine::QualityRange& q);
 
+// Whether every edge of `faces` is an edge of an even number of them: a closed surface
+// (the boundary of the domain, or of several bodies touching along edges).
+bool surface_closed(std::span<const Tri> faces);
+
 }  // namespace pdr::par

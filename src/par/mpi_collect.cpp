@@ -6,6 +6,7 @@
 #include <chrono>
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,19 @@ void wait_asleep(MPI_Request& r) {
 }  // namespace
 
 std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t round_bytes) {
+  std::vector<std::byte> all;
+  gather_into(
+      mine,
+      [&](std::size_t total) {
+        all.resize(total);
+        return all.data();
+      },
+      round_bytes);
+  return all;
+}
+
+void gather_into(std::span<const std::byte> mine, const std::function<std::byte*(std::size_t)>& out,
+                 std::size_t round_bytes) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
@@ -50,7 +64,7 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t
   for (std::size_t k = 0; k < n; ++k) start[k + 1] = start[k] + sizes[k];
   const std::size_t total = start[n];
   const std::size_t most = *std::max_element(sizes.begin(), sizes.end());
-  std::vector<std::byte> all(rank == 0 ? total : 0);
+  std::byte* const all = rank == 0 ? out(total) : nullptr;
   // One round when it fits (the counts and offsets are ints), straight into `all`; else
   // rounds of at most `chunk` bytes per rank, n * chunk <= INT_MAX, through a buffer.
   const std::size_t chunk =
@@ -69,17 +83,16 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t
     const int now = size > lo ? static_cast<int>(std::min<std::uint64_t>(chunk, size - lo)) : 0;
     if (rank == 0 && !one_round) buffer.resize(static_cast<std::size_t>(at));
     check(MPI_Igatherv(mine.data() + (now > 0 ? lo : 0), now, MPI_BYTE,
-                       one_round ? all.data() : buffer.data(), counts.data(), offsets.data(),
+                       one_round ? all : buffer.data(), counts.data(), offsets.data(),
                        MPI_BYTE, 0, MPI_COMM_WORLD, &r),
           "MPI_Igatherv");
     wait_asleep(r);
     if (rank == 0 && !one_round)
       for (std::size_t k = 0; k < n; ++k)
         if (counts[k] > 0)
-          std::memcpy(all.data() + start[k] + lo, buffer.data() + offsets[k],
+          std::memcpy(all + start[k] + lo, buffer.data() + offsets[k],
                       static_cast<std::size_t>(counts[k]));
   }
-  return all;
 }
 
 std::vector<Point> gather_points(const std::vector<Point>& mine) { return gather_values(mine); }

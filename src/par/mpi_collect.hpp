@@ -9,7 +9,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
+#include <functional>
+#include <stdexcept>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -28,14 +29,22 @@ std::vector<Point> gather_points(const std::vector<Point>& mine);
 std::vector<std::byte> gather_bytes(std::span<const std::byte> mine,
                                     std::size_t round_bytes = std::size_t{1} << 30);
 
-// Every rank's values, concatenated in rank order, at rank 0 (empty elsewhere).
+// The same, received where out(total) says at rank 0 (called there once, with the
+// total size, before anything is received; never elsewhere).
+void gather_into(std::span<const std::byte> mine, const std::function<std::byte*(std::size_t)>& out,
+                 std::size_t round_bytes = std::size_t{1} << 30);
+
+// Every rank's values, concatenated in rank order, at rank 0 (empty elsewhere), received
+// in place (no second copy).
 template <class T>
 std::vector<T> gather_values(const std::vector<T>& mine) {
   static_assert(std::is_trivially_copyable_v<T>);
-  const std::vector<std::byte> b =
-      gather_bytes(std::as_bytes(std::span(mine.data(), mine.size())));
-  std::vector<T> out(b.size() / sizeof(T));
-  if (!b.empty()) std::memcpy(out.data(), b.data(), b.size());
+  std::vector<T> out;
+  gather_into(std::as_bytes(std::span(mine.data(), mine.size())), [&](std::size_t total) {
+    if (total % sizeof(T) != 0) throw std::logic_error("gather_values: a rank sent part of a value");
+    out.resize(total / sizeof(T));
+    return reinterpret_cast<std::byte*>(out.data());
+  });
   return out;
 }
 
