@@ -97,7 +97,8 @@ nlohmann::json figures_json(int rank, const par::RankFigures& f) {
                     {"subsegment", f.deferred.subsegment},
                     {"subfacet", f.deferred.subfacet},
                     {"removed", f.deferred.removed},
-                    {"refused", f.deferred.refused}}},
+                    {"refused", f.deferred.refused},
+                    {"cap", f.deferred.cap}}},
       {"deferred_early", s.deferred_early},
       {"setbacks", s.setbacks},
       {"rounds", s.rounds},
@@ -128,7 +129,7 @@ void print_table(const std::vector<par::RankFigures>& all) {
                  "parallel phase: %-4zu %8.3f %8.3f %9llu %8llu %9llu %8llu %9llu %9llu %10llu\n",
                  r, f.seconds, f.busy_seconds, static_cast<unsigned long long>(f.steps.commits),
                  static_cast<unsigned long long>(f.steps.splits + f.steps.facet_points),
-                 static_cast<unsigned long long>(d.outside + d.subsegment + d.subfacet + d.removed),
+                 static_cast<unsigned long long>(d.outside + d.subsegment + d.subfacet + d.removed + d.cap),
                  static_cast<unsigned long long>(f.steps.setbacks),
                  static_cast<unsigned long long>(f.steps.tets_sent),
                  static_cast<unsigned long long>(f.messages_sent),
@@ -175,6 +176,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
   // Steps on ∂Ω in the phase where D's changes are exact (par/refinement_rules.hpp).
   const bool surface_steps = opt.exact_theory;
   const double shortest_t0 = refine::shortest_inside_edge(vm);  // T_o's, for Theorem 1's h
+  // The sequential command's vertex cap (the same base: T_o): the phase's ranks share what
+  // M_o leaves of it.
+  const std::size_t cap = refine::VertexBudget(vm.dt.points(), opt).cap();
   const refine::RefineResult coarse = refine::refine(
       vm, coarse_options(opt, inside_volume(vm), initial_tets, surface_steps));
   vm.missing_subfacets.clear();  // restored (or reported again by the completion below)
@@ -221,9 +225,11 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       {
         par::MpiTransport t{std::chrono::microseconds(latency_us)};
         try {
+          const std::size_t n0 = vm.dt.num_points();
           mine = par::refine_part(vm, part, t,
                                   {opt.ratio, opt.size, opt.max_volume, opt.region_volumes.get()},
-                                  seed, surface_steps);
+                                  seed, surface_steps,
+                                  cap > n0 ? (cap - n0) / static_cast<std::size_t>(w.size) : 0);
         } catch (const std::exception& e) {
           // Here, not after the transport's destructor: it would wait for sends and a
           // reduction round that the other ranks, waiting for this one, never complete.

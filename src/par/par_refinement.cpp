@@ -27,9 +27,11 @@ refine::QualityRange submesh_quality(const Submesh& s) {
 }
 
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
-                       const refine::TetBounds& bounds, std::uint64_t seed, bool surface_steps) {
+                       const refine::TetBounds& bounds, std::uint64_t seed, bool surface_steps,
+                       std::uint64_t points) {
   using Clock = std::chrono::steady_clock;
   RefinementRules rules(m0, bounds, surface_steps);
+  rules.set_point_budget(points);
   // One actor per submesh of this rank: with N == P the rank's transport itself, else the
   // ports of a mux (par/actor_mux.hpp).
   const int n = static_cast<int>(part.parts);

@@ -63,8 +63,11 @@ refine::QualityRange quality_of(std::span<const Submesh> submeshes);
 // on rank k % t.size(): one actor each, the rank's transport itself when there are as many
 // submeshes as ranks, else the ports of an ActorMux (par/actor_mux.hpp). The figures are
 // the rank's: its actors' summed.
+// `points`: at most that many points committed by this rank (its share of the vertex
+// cap; past it, steps are deferred).
 RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Transport& t,
                        const refine::TetBounds& bounds, std::uint64_t seed,
-                       bool surface_steps = false);
+                       bool surface_steps = false,
+                       std::uint64_t points = ~std::uint64_t{0});
 
 }  // namespace pdr::par

@@ -1,6 +1,8 @@
 // Fig. 2's step on a submesh with D as distributed; see par/refinement_rules.hpp.
 #include "par/refinement_rules.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 
 #include "geom/construct.hpp"
@@ -145,6 +147,10 @@ void RefinementRules::count_early_deferral(std::uint8_t reason) {
 
 Verdict RefinementRules::accept(const Submesh& s, const Cavity& c) {
   plan_.kind = Plan::Kind::None;
+  if (points_left_ == 0) {
+    ++deferred_.cap;
+    return {};
+  }
   const TetStore& st = s.store();
   const auto pts = s.points();
   // One pass over the closure (conflict tets, then the ring) reads each edge's and face's
@@ -228,6 +234,7 @@ Edge edge(VertexId a, VertexId b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 Verdict RefinementRules::accept_surface(const Submesh& s, const Cavity& c, Gid ga, Gid gb,
                                         Gid gc) {
   plan_ = Plan{};
+  if (points_left_ == 0) return {};  // dropped: its tet's step is then deferred (cap)
   const bool facet_step = gc != kNoGid;
   const VertexId a = s.find_vertex(ga), b = s.find_vertex(gb),
                  cc = facet_step ? s.find_vertex(gc) : kNoVertex;
@@ -381,6 +388,8 @@ bool RefinementRules::plan(const Submesh& s, const Cavity& c,
 }
 
 VertexId RefinementRules::commit(Submesh& s, const Cavity& c) {
+  if (points_left_ == 0) throw std::logic_error("refinement rules: a commit past the point budget");
+  --points_left_;
   if (plan_.kind == Plan::Kind::None) return s.insert(c, 1, kInterior);
   const bool split = plan_.kind == Plan::Kind::Split;
   plan_.kind = Plan::Kind::None;

@@ -78,6 +78,7 @@ struct DeferCounts {
   std::uint64_t subfacet = 0;    // p encroaches a subfacet of the closure
   std::uint64_t removed = 0;     // the cavity would remove a subsegment or subfacet
   std::uint64_t refused = 0;     // steps on ∂Ω whose change of D was not exact (above)
+  std::uint64_t cap = 0;         // the rank's share of the vertex cap was spent
 };
 
 // A step on ∂Ω committed in the parallel phase: a subsegment split (c = kNoGid) or a
@@ -112,6 +113,11 @@ class RefinementRules final : public StepRules {
   VertexId commit(Submesh& s, const Cavity& c) override;
   // A committed circumcenter is off ∂Ω (a step that would put one on it is deferred).
   std::uint8_t new_vertex_tag() const override { return kInterior; }
+
+  // The vertex cap (refine::VertexBudget): this rank commits at most `points` points in
+  // the phase (its share of the cap over M_o's vertices); past it every step is deferred
+  // (reason `cap`), and the completion, which tests the cap, stops and says so.
+  void set_point_budget(std::uint64_t points) { points_left_ = points; }
 
   const std::vector<SurfaceStep>& surface_steps() const { return steps_; }
   // The elements (their vertices' global ids, sorted; kNoGid last for a subsegment) whose
@@ -172,6 +178,7 @@ class RefinementRules final : public StepRules {
   DeferCounts deferred_;
   std::vector<std::pair<VertexId, VertexId>> kept_;  // accept(): the boundary's edges
   const bool surface_steps_enabled_;
+  std::uint64_t points_left_ = ~std::uint64_t{0};
   std::set<Key> refused_;
   // accept_surface() -> commit(): the step's change of D (local vertex ids). One rules
   // object serves every actor of a rank: the actor calls commit() right after the accept

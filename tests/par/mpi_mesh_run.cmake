@@ -7,6 +7,9 @@
 #   [-DWANT_NO_OUTPUT=ON] no file starts with OUT (nothing half-written)
 #   [-DWANT_PVTU=ON]      OUT.pvtu names NP pieces OUT_p<r>.vtu whose tets add up to the mesh's
 #   [-DWANT_SUBMESHES=n]  the parallel phase cut M_o into n submeshes
+#   [-DWANT_MAX_VERTICES=n] the run stopped at the vertex cap n: at most n vertices, a
+#                         stop_reason naming the cap, and ranks that deferred steps
+#                         for it (parallel.per_rank[r].deferred.cap)
 #   [-DWANT_LISTED=ON|OFF] the ranks listed the mesh themselves (parallel.listed_by_ranks:
 #                         par/mesh_parts.hpp), or rank 0 assembled it
 separate_arguments(args UNIX_COMMAND "${ARGS}")
@@ -52,6 +55,15 @@ if(WANT_SUBMESHES)
   string(JSON submeshes GET "${out}" parallel submeshes)
   if(NOT submeshes EQUAL WANT_SUBMESHES)
     message(FATAL_ERROR "parallel: ${submeshes} submeshes, expected ${WANT_SUBMESHES}\n${out}")
+  endif()
+endif()
+if(WANT_MAX_VERTICES)
+  string(JSON vertices GET "${out}" vertices)
+  string(JSON reason GET "${out}" stop_reason)
+  string(JSON capped GET "${out}" parallel per_rank 0 deferred cap)
+  if(vertices GREATER WANT_MAX_VERTICES OR NOT reason MATCHES "cap" OR capped EQUAL 0)
+    message(FATAL_ERROR "vertex cap ${WANT_MAX_VERTICES}: ${vertices} vertices, stop_reason '${reason}', "
+                        "rank 0 deferred ${capped} steps for it\n${out}")
   endif()
 endif()
 if(DEFINED WANT_LISTED)
