@@ -11,6 +11,8 @@
 // toward zero, and widening by one ulp either way encloses the rational.
 #pragma once
 
+#include <optional>
+
 #include "check/grid.hpp"
 #include "check/interval.hpp"
 
@@ -21,8 +23,18 @@ struct BallEnclosure {
   Interval r2;  // squared radius
 };
 
-// Circumball of a tet; precondition orient3d(a,b,c,d) != 0.
+// Circumball of a tet; precondition orient3d(a,b,c,d) != 0. First from one plain
+// evaluation with a proven a-priori error bound (detail::circumball_bounded), else with
+// every step in interval arithmetic, else exactly.
 BallEnclosure circumball(const Point& a, const Point& b, const Point& c, const Point& d);
+
+namespace detail {
+// The plain evaluation's enclosure (its proof in circumball.cpp), or nullopt where its
+// guards fail: a coordinate difference not 0 and out of [2^-250, 2^250], or a determinant
+// whose sign the bound leaves open.
+std::optional<BallEnclosure> circumball_bounded(const Point& a, const Point& b, const Point& c,
+                                                const Point& d);
+}  // namespace detail
 // Diametral ball of segment ab.
 BallEnclosure diametral_ball(const Point& a, const Point& b);
 // Equatorial ball of triangle abc; precondition: a, b, c not collinear.

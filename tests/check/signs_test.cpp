@@ -140,6 +140,63 @@ RC_GTEST_PROP(Interval, CircumballEnclosesTheExactCenter, ()) {
     for (int i = 0; i < 3; ++i) RC_ASSERT(box.lo[i] <= (*p)[i] && (*p)[i] <= box.hi[i]);
 }
 
+// The plain evaluation with its proven bound (detail::circumball_bounded) on tets of every
+// scale (2^-240 .. 2^240 about a random origin), nearly flat ones included (the fourth
+// point within 2^-k of the plane of the other three): where it answers, its enclosure holds
+// the exact centre and squared radius; ordinary tets take it.
+RC_GTEST_PROP(Interval, BoundedCircumballEnclosesTheExactCenter, ()) {
+  const int scale = *rc::gen::inRange(-240, 241);
+  const auto coordinate = [&] {
+    return rc::gen::map(rc::gen::inRange(-1000000, 1000001),
+                        [scale](int k) { return std::ldexp(k / 1e6, scale); });
+  };
+  const Point origin{*rc::gen::inRange(-1000, 1001) * 0.37, *rc::gen::inRange(-1000, 1001) * 0.11, 0.5};
+  const auto point = [&] {
+    const Point o = *rc::gen::oneOf(rc::gen::just(Point{0, 0, 0}), rc::gen::just(origin));
+    return Point{o[0] + *coordinate(), o[1] + *coordinate(), o[2] + *coordinate()};
+  };
+  const Point a = point(), b = point(), c = point();
+  Point d = point();
+  if (*rc::gen::arbitrary<bool>()) {  // nearly flat: d near the plane of a, b, c
+    const double s = *rc::gen::inRange(-3, 4) * 0.5, t = *rc::gen::inRange(-3, 4) * 0.25;
+    const int lift = *rc::gen::inRange(10, 60);
+    for (int i = 0; i < 3; ++i)
+      d[i] = a[i] + s * (b[i] - a[i]) + t * (c[i] - a[i]) + std::ldexp(*coordinate(), -lift);
+  }
+  RC_PRE(exact::orient3d(a, b, c, d) != Sign::Zero);
+  const auto ball = detail::circumball_bounded(a, b, c, d);
+  RC_TAG(ball ? "bounded" : "fallback");
+  if (!ball) return;
+  const auto x = exact::circumcenter(a, b, c, d);
+  for (int i = 0; i < 3; ++i) {
+    RC_ASSERT(ball->center[i].finite());
+    RC_ASSERT(below(ball->center[i].lo, x[i]));
+    RC_ASSERT(above(ball->center[i].hi, x[i]));
+  }
+  const mpq_class r2 = exact::circumradius2(a, b, c, d);
+  RC_ASSERT(below(ball->r2.lo, r2));
+  RC_ASSERT(above(ball->r2.hi, r2));
+}
+
+TEST(Interval, BoundedCircumballIsTakenWhereItsGuardsHold) {
+  const Point a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
+  const auto ball = detail::circumball_bounded(a, b, c, d);
+  ASSERT_TRUE(ball.has_value());
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_LE(ball->center[i].lo, 0.5);
+    EXPECT_GE(ball->center[i].hi, 0.5);
+    EXPECT_LT(ball->center[i].hi - ball->center[i].lo, 1e-14);  // tight
+  }
+  // A difference below 2^-250 (or above 2^250): the interval evaluation instead.
+  EXPECT_FALSE(detail::circumball_bounded(a, {0x1p-260, 0, 0}, {0, 0x1p-260, 0}, {0, 0, 0x1p-260}));
+  EXPECT_FALSE(detail::circumball_bounded(a, {0x1p260, 0, 0}, c, d));
+  // Flat beyond what the bound resolves (d a hair off the plane of a, b, c, whose
+  // coordinates round): the determinant's sign is left open.
+  const Point p{1, 0.1, 0.2}, q{0.3, 1, 0.7};
+  EXPECT_FALSE(detail::circumball_bounded(a, p, q, {0.65, 0.55, 0.45 + 0x1p-60}));
+  EXPECT_TRUE(detail::circumball_bounded(a, p, q, {0.65, 0.55, 0.5}));
+}
+
 // Squared distances of points of every magnitude: small dyadic, arbitrary, tiny (down to
 // subnormal differences), huge (up to overflow), and pairs an ulp apart.
 RC_GTEST_PROP(Interval, SquaredDistanceEnclosesTheExactValue, ()) {
