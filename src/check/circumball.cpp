@@ -50,7 +50,7 @@ namespace detail {
 //     bounds above): P >= S_rounded (1 - u)^8 and S <= S_rounded (1 - u)^-4, so
 //     S <= P (1 - u)^-12; likewise S_D <= PD (1 - u)^-8.
 //   - A g arises only from a nonzero |u|^2 x, and then P holds the term |u|^2 (|p| + |q|)
-//     >= 2^-1000 (1 - u)^3, so 3 (1 + u)^2 2^-1075 < 2^-73 P.
+//     >= 2^-1000 (1 - u)^2, so 3 (1 + u)^2 2^-1075 < 2^-73 P.
 // Hence |fl(N_i) - N_i| < (gamma_12 (1 - u)^-12 + 2^-73) P < 16 u P = 2^-49 P, and
 // |fl(D) - D| < 2^-49 PD: the errors E below, rounded up (interval_detail::up), enclose
 // them. Where D's enclosure keeps its sign, N / (2 D) is enclosed by interval division, and
@@ -94,7 +94,11 @@ std::optional<BallEnclosure> circumball_bounded(const Point& a, const Point& b, 
     off[static_cast<std::size_t>(i)] = make(N - EN, N + EN) / two_d;
     if (!off[static_cast<std::size_t>(i)].finite()) return std::nullopt;
   }
-  return BallEnclosure{ivec(a) + off, norm2(off)};
+  BallEnclosure ball{ivec(a) + off, norm2(off)};
+  for (const Interval& x : ball.center)
+    if (!x.finite()) return std::nullopt;  // a huge |a|: the other evaluations
+  if (!ball.r2.finite()) return std::nullopt;
+  return ball;
 }
 
 }  // namespace detail

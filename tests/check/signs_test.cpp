@@ -141,9 +141,9 @@ RC_GTEST_PROP(Interval, CircumballEnclosesTheExactCenter, ()) {
 }
 
 // The plain evaluation with its proven bound (detail::circumball_bounded) on tets of every
-// scale (2^-240 .. 2^240 about a random origin), nearly flat ones included (the fourth
-// point within 2^-k of the plane of the other three): where it answers, its enclosure holds
-// the exact centre and squared radius; ordinary tets take it.
+// scale (2^-240 .. 2^240 about a random origin), nearly flat ones (the fourth point within
+// 2^-k of the plane of the other three) and ones at its guard: where it answers, its
+// enclosure holds the exact centre and squared radius.
 RC_GTEST_PROP(Interval, BoundedCircumballEnclosesTheExactCenter, ()) {
   const int scale = *rc::gen::inRange(-240, 241);
   const auto coordinate = [&] {
@@ -155,9 +155,23 @@ RC_GTEST_PROP(Interval, BoundedCircumballEnclosesTheExactCenter, ()) {
     const Point o = *rc::gen::oneOf(rc::gen::just(Point{0, 0, 0}), rc::gen::just(origin));
     return Point{o[0] + *coordinate(), o[1] + *coordinate(), o[2] + *coordinate()};
   };
-  const Point a = point(), b = point(), c = point();
-  Point d = point();
-  if (*rc::gen::arbitrary<bool>()) {  // nearly flat: d near the plane of a, b, c
+  // Or coordinates a few ulps around small multiples of 2^-250, the guard: cross
+  // components that cancel to about 2^-552, and subnormal products |u|^2 x.
+  const auto near_guard = [&] {
+    Point p;
+    for (int i = 0; i < 3; ++i) {
+      double x = std::ldexp(*rc::gen::inRange(-3, 4), -250);
+      for (int k = *rc::gen::inRange(-3, 4); k != 0; k += k > 0 ? -1 : 1)
+        x = std::nextafter(x, k > 0 ? INFINITY : -INFINITY);
+      p[i] = x;
+    }
+    return p;
+  };
+  const bool guard = *rc::gen::inRange(0, 4) == 0;
+  const Point a = guard ? near_guard() : point(), b = guard ? near_guard() : point(),
+              c = guard ? near_guard() : point();
+  Point d = guard ? near_guard() : point();
+  if (!guard && *rc::gen::arbitrary<bool>()) {  // nearly flat: d near the plane of a, b, c
     const double s = *rc::gen::inRange(-3, 4) * 0.5, t = *rc::gen::inRange(-3, 4) * 0.25;
     const int lift = *rc::gen::inRange(10, 60);
     for (int i = 0; i < 3; ++i)
