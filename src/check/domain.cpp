@@ -615,20 +615,15 @@ void assign_faces(DomainMap& m, const MeshView& mesh, const Topology& topo) {
 DomainMap map_domain(const Plc& domain, const MeshView& mesh, const Topology& topo,
                      const PointGrid& grid, const Options& options) {
   DomainMap m;
-  // Input vertices are matched by exactly equal coordinates.
-  std::vector<std::uint32_t> order(mesh.points.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
-    return lex_less(mesh.points[x], mesh.points[y]) ||
-           (!lex_less(mesh.points[y], mesh.points[x]) && x < y);
-  });
+  // Input vertices are matched by exactly equal coordinates: the smallest mesh vertex id at
+  // p, found through the grid (a query of the box [p, p] visits every stored point equal
+  // to p).
   m.mesh_vertex.resize(domain.points.size());
   for (std::size_t i = 0; i < domain.points.size(); ++i) {
     const Point& p = domain.points[i];
-    const auto it = std::lower_bound(order.begin(), order.end(), p, [&](std::uint32_t v, const Point& q) {
-      return lex_less(mesh.points[v], q);
+    grid.query(Box{p, p}, [&](std::uint32_t v, const Point& q) {
+      if (q == p && (!m.mesh_vertex[i] || v < *m.mesh_vertex[i])) m.mesh_vertex[i] = v;
     });
-    if (it != order.end() && !lex_less(p, mesh.points[*it])) m.mesh_vertex[i] = *it;
   }
   const double tol = options.relative_tolerance;
   SegmentIndex seg_index;
