@@ -76,6 +76,26 @@ TEST(Validity, DuplicatedVertexFailsOnlyDuplicates) {
   EXPECT_EQ(f.vertices, (std::vector<std::uint32_t>{13, 27}));
 }
 
+// Three vertices at one point and two at another: each later copy is reported against the
+// copy before it (the next smaller id), in id order, whatever the thread count.
+TEST(Validity, EveryLaterCopyOfAPointIsADuplicateOfThePreviousOne) {
+  MeshData m = kuhn_grid(2);
+  m.points.push_back(m.points[13]);  // 27
+  m.points.push_back(m.points[5]);   // 28
+  m.points.push_back(m.points[13]);  // 29
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    Options o;
+    o.threads = threads;
+    const Report r = run(m, o);
+    const CheckResult& d = result(r, "validity.duplicate_vertices");
+    EXPECT_EQ(d.violations, 3u);
+    ASSERT_EQ(d.findings.size(), 3u);
+    EXPECT_EQ(d.findings[0].vertices, (std::vector<std::uint32_t>{13, 27}));
+    EXPECT_EQ(d.findings[1].vertices, (std::vector<std::uint32_t>{5, 28}));
+    EXPECT_EQ(d.findings[2].vertices, (std::vector<std::uint32_t>{27, 29}));
+  }
+}
+
 TEST(Validity, DeletedInteriorTetLeavesAValidMeshWithACavity) {
   MeshData m = kuhn_grid(3);
   m.tets.erase(m.tets.begin() + 13 * 6 + 2);  // a tet of the central cube
