@@ -7,30 +7,22 @@
 
 #include "geom/encroach.hpp"
 #include "mesh/tables.hpp"
-#include "refine/volume_mesh.hpp"
+#include "par/refinement_rules.hpp"
 
 namespace pdr::par {
 namespace {
 
-constexpr auto kInteriorTag = static_cast<std::uint8_t>(1 + static_cast<int>(refine::VertexClass::Interior));
-
-// Whether vertex v of s may be a vertex of an element of D (its tag: M_o's vertex class,
-// or where the phase put it; 0, no tag, may be anything).
-bool may_be_on_d(const Submesh& s, VertexId v) { return s.tag(v) != kInteriorTag; }
-
-// Vertex v of s was made in the phase on ∂Ω (a subsegment midpoint or a subfacet
-// circumcenter: par/refinement_rules.hpp tags it with its class).
+// Vertex v of s was made in the phase on ∂Ω.
 bool made_on_d(const Submesh& s, VertexId v) {
-  return made_vertex(s.gid(v)).has_value() && s.tag(v) != kInteriorTag && s.tag(v) != 0;
+  return made_vertex(s.gid(v)).has_value() && RefinementRules::made_on_d(s.tag(v));
 }
 
 // The facet of face f of real tet t (its label), or kNoLabel.
 std::uint32_t face_facet(const Submesh& s, TetId t, int f) {
   const VertexId* v = s.store().vertices(t);
   const auto& fv = tables::kFaceVertex[f];
-  if (!may_be_on_d(s, v[fv[0]]) || !may_be_on_d(s, v[fv[1]]) || !may_be_on_d(s, v[fv[2]]))
-    return kNoLabel;
-  return s.face_label(v[fv[0]], v[fv[1]], v[fv[2]]);
+  const refine::MaybeId facet = RefinementRules::subfacet(s, v[fv[0]], v[fv[1]], v[fv[2]]);
+  return facet ? *facet : kNoLabel;
 }
 
 // An element of D of real tet t is encroached (strictly) by a vertex of t.
@@ -39,7 +31,7 @@ bool encroached_in(const Submesh& s, TetId t) {
   const auto pts = s.points();
   for (const auto& e : tables::kEdgeVertex) {
     const VertexId a = v[e[0]], b = v[e[1]];
-    if (!may_be_on_d(s, a) || !may_be_on_d(s, b) || s.edge_label(a, b) == kNoLabel) continue;
+    if (!RefinementRules::subsegment(s, a, b)) continue;
     for (int k = 0; k < 4; ++k)
       if (k != e[0] && k != e[1] && in_diametral_ball(pts[a], pts[b], pts[v[k]]) == Sign::Positive)
         return true;

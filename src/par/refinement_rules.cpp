@@ -51,14 +51,14 @@ void RefinementRules::label(Submesh& s) const {
   }
 }
 
-refine::MaybeId RefinementRules::subsegment(const Submesh& s, VertexId a, VertexId b) const {
+refine::MaybeId RefinementRules::subsegment(const Submesh& s, VertexId a, VertexId b) {
   if (!may_be(s.tag(a), kSegment) || !may_be(s.tag(b), kSegment)) return {};
   const std::uint32_t l = s.edge_label(a, b);
   return l == kNoLabel ? refine::MaybeId{} : refine::MaybeId{l};
 }
 
 refine::MaybeId RefinementRules::subfacet(const Submesh& s, VertexId a, VertexId b,
-                                          VertexId c) const {
+                                          VertexId c) {
   if (s.tag(a) == kInterior || s.tag(b) == kInterior || s.tag(c) == kInterior) return {};
   const std::uint32_t l = s.face_label(a, b, c);
   return l == kNoLabel ? refine::MaybeId{} : refine::MaybeId{l};

@@ -137,8 +137,11 @@ class RefinementRules final : public StepRules {
   // D as seen from submesh s (vertices local to s): the segment of subsegment {a, b}, the
   // facet of subfacet {a, b, c}; both filter by the vertices' tags first, then read the
   // submesh's labels.
-  refine::MaybeId subsegment(const Submesh& s, VertexId a, VertexId b) const;
-  refine::MaybeId subfacet(const Submesh& s, VertexId a, VertexId b, VertexId c) const;
+  static refine::MaybeId subsegment(const Submesh& s, VertexId a, VertexId b);
+  static refine::MaybeId subfacet(const Submesh& s, VertexId a, VertexId b, VertexId c);
+  // Whether a vertex made in the phase with this tag lies on ∂Ω (a subsegment midpoint or
+  // a subfacet circumcenter; commit() tags them so).
+  static bool made_on_d(std::uint8_t tag) { return tag == kSegment || tag == kFacet; }
   // False: no edge of the tet with vertices v (of s) is a subsegment and no face a
   // subfacet, since at most one of its vertices may lie on ∂Ω (most tets).
   static bool may_touch_d(const Submesh& s, const VertexId* v) {
