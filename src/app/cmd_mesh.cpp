@@ -59,17 +59,20 @@ void check_range(const Plc& plc) {
 // them; oriented out of their lower tet slot); with region records in the input, or
 // several regions (internal facets, or `cells` > 1: bodies apart, or touching along an
 // edge), each tet's region attribute too (app/regions.hpp; TetGen's -A).
+// Some facet lies inside the domain (Ω on both sides).
+bool internal_facets(const refine::VolumeMesh& m) {
+  const auto& facets = m.surf.facets;
+  return std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; });
+}
+
 // Whether the tets get region attributes (export_domain).
 bool needs_regions(const refine::VolumeMesh& m, const Plc& plc, std::size_t cells) {
-  const auto& facets = m.surf.facets;
-  return !plc.regions.empty() || cells > 1 ||
-         std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; });
+  return !plc.regions.empty() || cells > 1 || internal_facets(m);
 }
 
 MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc, std::size_t cells) {
   MeshData mesh = to_mesh_data(m.dt, m.inside);
-  const auto& facets = m.surf.facets;
-  const bool internal = std::any_of(facets.begin(), facets.end(), [](const auto& f) { return !f.separates; });
+  const bool internal = internal_facets(m);
   if (internal) {
     const TetStore& s = m.dt.store();
     for (TetId t = 0; t < s.slots(); ++t) {
@@ -83,7 +86,7 @@ MeshData export_domain(const refine::VolumeMesh& m, const Plc& plc, std::size_t 
       }
     }
   }
-  if (!plc.regions.empty() || internal || cells > 1) {
+  if (needs_regions(m, plc, cells)) {
     const std::vector<int> label = region_labels(m, plc.regions);
     const TetStore& s = m.dt.store();
     mesh.tet_regions.reserve(mesh.tets.size());
