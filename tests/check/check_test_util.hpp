@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <set>
 #include <string>
+#include <vector>
 
 #include "check/check.hpp"
 
@@ -32,6 +35,19 @@ inline std::uint64_t count(const Report& r, std::string_view id, const std::stri
 inline Report run(const MeshData& m, Options o = {}) { return check_mesh(view_of(m), o); }
 inline Report run(const MeshData& m, const Plc& d, Options o = {}) {
   return check_mesh(view_of(m), d, o);
+}
+
+// The report as JSON for 1, 2 and 3 checker threads, the thread count itself left out: a
+// test that the report does not depend on the threads compares them.
+inline std::vector<nlohmann::json> reports_for_threads(const MeshData& m, Options o) {
+  std::vector<nlohmann::json> out;
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    o.threads = threads;
+    nlohmann::json j = to_json(run(m, o));
+    j["options"].erase("threads");
+    out.push_back(std::move(j));
+  }
+  return out;
 }
 
 }  // namespace pdr::check::test
