@@ -2,10 +2,13 @@
 //
 // Order and gating: validity.indices and validity.coordinates come first; if either fails,
 // every other check is Skipped (indices and finite coordinates are preconditions of all
-// geometry). Then orientation (its exact signs are shared), the topology, the remaining
-// validity checks, the vertex grid, Delaunay emptiness and quality, and with a domain the
-// conformity and encroachment checks. Without a domain those are Skipped.
+// geometry). Then orientation (its exact signs are shared), the topology and the vertex
+// grid; then three groups that share only what is already computed, concurrently with
+// several threads: the remaining validity checks, Delaunay emptiness and quality, and with
+// a domain the conformity and encroachment checks (without one those are Skipped). The
+// report lists the checks in one fixed order whatever the threads.
 #include <chrono>
+#include <future>
 #include <utility>
 
 #include "check/checks.hpp"
@@ -65,6 +68,64 @@ void skip_rest(Report& rep, const std::string& reason) {
   }
 }
 
+// Checks run in order on one thread, their results and times kept for the report.
+class Group {
+ public:
+  // `on_phase` (Options::on_phase, or null) hears of each phase as it starts.
+  explicit Group(const std::function<void(std::string_view)>* on_phase = nullptr)
+      : on_phase_(on_phase) {}
+  template <class F>
+  void time(const char* phase, F&& f) {
+    if (on_phase_ && *on_phase_) (*on_phase_)(phase);
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    seconds_.emplace_back(phase, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  template <class F>
+  void add(const char* phase, F&& f) {
+    time(phase, [&] { results_.push_back(f()); });
+  }
+  void report_into(Report& rep) {
+    for (CheckResult& r : results_) rep.checks.push_back(std::move(r));
+    for (const auto& [phase, s] : seconds_) rep.seconds[phase] += s;
+    results_.clear();
+    seconds_.clear();
+  }
+
+ private:
+  const std::function<void(std::string_view)>* on_phase_;
+  std::vector<CheckResult> results_;
+  std::vector<std::pair<const char*, double>> seconds_;
+};
+
+// fill(group) on another thread (`concurrent`), or on the caller's when the group is asked
+// for; an exception reaches the caller there.
+// Progress is heard of only from groups run on the caller's thread.
+template <class F>
+class StartedGroup {
+ public:
+  StartedGroup(bool concurrent, const Options& o, F fill)
+      : fill_(std::move(fill)),
+        group_(concurrent ? nullptr : &o.on_phase),
+        done_(std::async(concurrent ? std::launch::async : std::launch::deferred,
+                         [this] { fill_(group_); })) {}
+  Group& get() const {
+    done_.get();
+    return group_;
+  }
+  StartedGroup(const StartedGroup&) = delete;
+  StartedGroup& operator=(const StartedGroup&) = delete;
+
+ private:
+  F fill_;
+  mutable Group group_;
+  std::shared_future<void> done_;
+};
+template <class F>
+StartedGroup<F> start_group(bool concurrent, const Options& o, F fill) {
+  return StartedGroup<F>(concurrent, o, std::move(fill));
+}
+
 Report run(const MeshView& mesh, const Plc* domain, Options o) {
   o.threads = std::max(1u, o.threads);
   Report rep;
@@ -86,27 +147,37 @@ Report run(const MeshView& mesh, const Plc* domain, Options o) {
   rep.checks.push_back(time("orientation", [&] { return check_orientation(mesh, o, c.orientation); }));
   c.topology = time("topology", [&] { return build_topology(mesh.tets, o.threads); });
   rep.boundary_faces = c.topology.boundary.size();
-  rep.checks.push_back(time("validity", [&] { return check_duplicate_vertices(c); }));
-  rep.checks.push_back(time("validity", [&] { return check_unreferenced_vertices(c); }));
-  rep.checks.push_back(time("validity", [&] { return check_face_sharing(c); }));
-  rep.checks.push_back(time("validity", [&] { return check_boundary_closed(c); }));
-  rep.checks.push_back(time("validity", [&] { return check_listed_faces(c); }));
-  rep.checks.push_back(time("overlap", [&] { return check_overlap(c); }));
   c.grid = time("grid", [&] { return PointGrid(mesh.points); });
-  rep.checks.push_back(time("delaunay", [&] { return check_empty_circumspheres(c); }));
-  rep.checks.push_back(time("quality", [&] { return check_radius_edge_ratio(c); }));
-  rep.checks.push_back(time("quality", [&] { return check_shortest_edge(c); }));
-  if (!domain) {
-    skip_rest(rep, "no domain given");
-    return rep;
-  }
-  c.domain_map = time("domain", [&] { return map_domain(*domain, mesh, c.topology, c.grid, o); });
-  rep.checks.push_back(time("conformity", [&] { return check_input_vertices(c); }));
-  rep.checks.push_back(time("conformity", [&] { return check_segments(c); }));
-  rep.checks.push_back(time("conformity", [&] { return check_facets(c); }));
-  rep.checks.push_back(time("conformity", [&] { return check_domain_volume(c); }));
-  rep.checks.push_back(time("encroachment", [&] { return check_subsegments_unencroached(c); }));
-  rep.checks.push_back(time("encroachment", [&] { return check_subfacets_unencroached(c); }));
+  // Three groups that read the context and nothing the others write: the validity of the
+  // tetrahedralization, the domain's (map, conformity, encroachment), and the Delaunay and
+  // quality checks (delaunay.empty_sphere fills circum_r2 for quality.ratio). The first two
+  // are mostly single-threaded, so with several threads they run beside the third instead
+  // of leaving cores idle. The report lists the results in kChecks' order either way.
+  const bool concurrent = o.threads > 1;
+  const auto validity = start_group(concurrent, o, [&](Group& g) {
+    g.add("validity", [&] { return check_duplicate_vertices(c); });
+    g.add("validity", [&] { return check_unreferenced_vertices(c); });
+    g.add("validity", [&] { return check_face_sharing(c); });
+    g.add("validity", [&] { return check_boundary_closed(c); });
+    g.add("validity", [&] { return check_listed_faces(c); });
+    g.add("overlap", [&] { return check_overlap(c); });
+  });
+  const auto conforming = start_group(concurrent && domain, o, [&](Group& g) {
+    if (!domain) return;
+    g.time("domain", [&] { c.domain_map = map_domain(*domain, mesh, c.topology, c.grid, o); });
+    g.add("conformity", [&] { return check_input_vertices(c); });
+    g.add("conformity", [&] { return check_segments(c); });
+    g.add("conformity", [&] { return check_facets(c); });
+    g.add("conformity", [&] { return check_domain_volume(c); });
+    g.add("encroachment", [&] { return check_subsegments_unencroached(c); });
+    g.add("encroachment", [&] { return check_subfacets_unencroached(c); });
+  });
+  Group geometry(&o.on_phase);
+  geometry.add("delaunay", [&] { return check_empty_circumspheres(c); });
+  geometry.add("quality", [&] { return check_radius_edge_ratio(c); });
+  geometry.add("quality", [&] { return check_shortest_edge(c); });
+  for (Group* g : {&validity.get(), &geometry, &conforming.get()}) g->report_into(rep);
+  if (!domain) skip_rest(rep, "no domain given");
   return rep;
 }
 

@@ -172,23 +172,36 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads, std::size_t
       for (std::uint32_t v : ends) part.edges.push_back(edge_key(u, v));
     }
   });
-  Topology topo;
-  std::size_t nf = 0, nr = 0, ne = 0;
-  for (const Part& p : parts) nf += p.faces.size(), nr += p.refs.size(), ne += p.edges.size();
-  topo.faces.reserve(nf);
-  topo.face_start.reserve(nf + 1);
-  topo.refs.reserve(nr);
-  topo.edges.reserve(ne);
-  for (const Part& p : parts) {
-    const auto face_base = static_cast<std::uint32_t>(topo.faces.size());
-    const auto ref_base = static_cast<std::uint32_t>(topo.refs.size());
-    topo.faces.insert(topo.faces.end(), p.faces.begin(), p.faces.end());
-    for (std::uint32_t s : p.face_start) topo.face_start.push_back(ref_base + s);
-    topo.refs.insert(topo.refs.end(), p.refs.begin(), p.refs.end());
-    for (std::uint32_t f : p.boundary) topo.boundary.push_back(face_base + f);
-    topo.edges.insert(topo.edges.end(), p.edges.begin(), p.edges.end());
+  // Each part's place in the whole, then every part copied there by the threads (one
+  // thread would fault in and copy the whole topology alone).
+  std::vector<std::size_t> face_at(nparts + 1, 0), ref_at(nparts + 1, 0), bnd_at(nparts + 1, 0),
+      edge_at(nparts + 1, 0);
+  for (unsigned p = 0; p < nparts; ++p) {
+    face_at[p + 1] = face_at[p] + parts[p].faces.size();
+    ref_at[p + 1] = ref_at[p] + parts[p].refs.size();
+    bnd_at[p + 1] = bnd_at[p] + parts[p].boundary.size();
+    edge_at[p + 1] = edge_at[p] + parts[p].edges.size();
   }
-  topo.face_start.push_back(static_cast<std::uint32_t>(topo.refs.size()));
+  Topology topo;
+  topo.faces.resize(face_at[nparts]);
+  topo.face_start.resize(face_at[nparts] + 1);
+  topo.refs.resize(ref_at[nparts]);
+  topo.boundary.resize(bnd_at[nparts]);
+  topo.edges.resize(edge_at[nparts]);
+  parallel_blocks(nparts, workers, 1, [&](unsigned, std::size_t p, std::size_t) {
+    Part& part = parts[p];
+    std::copy(part.faces.begin(), part.faces.end(), topo.faces.begin() + face_at[p]);
+    const auto ref_base = static_cast<std::uint32_t>(ref_at[p]);
+    std::transform(part.face_start.begin(), part.face_start.end(),
+                   topo.face_start.begin() + face_at[p], [&](std::uint32_t s) { return ref_base + s; });
+    std::copy(part.refs.begin(), part.refs.end(), topo.refs.begin() + ref_at[p]);
+    const auto face_base = static_cast<std::uint32_t>(face_at[p]);
+    std::transform(part.boundary.begin(), part.boundary.end(),
+                   topo.boundary.begin() + bnd_at[p], [&](std::uint32_t f) { return face_base + f; });
+    std::copy(part.edges.begin(), part.edges.end(), topo.edges.begin() + edge_at[p]);
+    part = Part{};
+  });
+  topo.face_start.back() = static_cast<std::uint32_t>(topo.refs.size());
   return topo;
 }
 

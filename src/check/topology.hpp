@@ -14,8 +14,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "check/check.hpp"
@@ -50,12 +52,35 @@ struct FaceRef {
   std::uint8_t odd = 0;
 };
 
+// std::allocator, except that a resize leaves trivially constructible elements
+// uninitialized: the topology's arrays are sized once, then filled by every thread, each
+// faulting in its own pages, instead of first zeroed by one.
+template <class T>
+struct UninitAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitAllocator<U>;
+  };
+  UninitAllocator() = default;
+  template <class U>
+  UninitAllocator(const UninitAllocator<U>&) noexcept {}
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    if constexpr (sizeof...(Args) == 0)
+      ::new (static_cast<void*>(p)) U;
+    else
+      ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template <class T>
+using FilledArray = std::vector<T, UninitAllocator<T>>;
+
 struct Topology {
-  std::vector<Tri> faces;                 // distinct faces, vertex ids sorted, in lex order
-  std::vector<std::uint32_t> face_start;  // faces.size() + 1 offsets into refs
-  std::vector<FaceRef> refs;              // the tets holding each face
-  std::vector<std::uint32_t> boundary;    // indices of faces held by exactly one tet
-  std::vector<std::uint64_t> edges;       // distinct edges (u << 32 | v), u < v, sorted
+  FilledArray<Tri> faces;                 // distinct faces, vertex ids sorted, in lex order
+  FilledArray<std::uint32_t> face_start;  // faces.size() + 1 offsets into refs
+  FilledArray<FaceRef> refs;              // the tets holding each face
+  FilledArray<std::uint32_t> boundary;    // indices of faces held by exactly one tet
+  FilledArray<std::uint64_t> edges;       // distinct edges (u << 32 | v), u < v, sorted
 
   std::span<const FaceRef> holders(std::size_t face) const {
     return {refs.data() + face_start[face], refs.data() + face_start[face + 1]};

@@ -91,8 +91,8 @@ RC_GTEST_PROP(Topology, EqualsTheBruteForceOne, ()) {
     if (holders.size() == 1) boundary.push_back(static_cast<std::uint32_t>(i));
     ++i;
   }
-  RC_ASSERT(topo.boundary == boundary);
-  RC_ASSERT(std::vector<std::uint64_t>(b.edges.begin(), b.edges.end()) == topo.edges);
+  RC_ASSERT(std::ranges::equal(topo.boundary, boundary));
+  RC_ASSERT(std::ranges::equal(b.edges, topo.edges));
 }
 
 }  // namespace
