@@ -246,14 +246,21 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       // made vertices (the vertex numbers) in one sum.
       bool final_here = listing != nullptr && opt.admissible && coarse.stats.h_theorem > 0;
       for (const par::Submesh& sub : mine.submeshes) final_here = final_here && par::part_is_final(sub);
-      std::vector<std::uint64_t> sums(1 + part.parts, 0);
+      // The sum's last entry: the submeshes' tets, a bound on the listed ones (rank 0
+      // reserves room for all of them and receives the others' where they go).
+      std::vector<std::uint64_t> sums(2 + part.parts, 0);
       sums[0] = final_here ? 0 : 1;
       for (std::size_t i = 0; i < mine.made.size(); ++i)
         sums[1 + static_cast<std::size_t>(w.rank) + i * static_cast<std::size_t>(w.size)] = mine.made[i];
+      for (const par::Submesh& sub : mine.submeshes) sums.back() += sub.real_tets();
       sums = par::sum_over_ranks(sums);
       if (sums[0] == 0) {
-        const par::VertexNumbers num(vm.dt.num_points(), std::span(sums).subspan(1), w.size);
+        const par::VertexNumbers num(vm.dt.num_points(), std::span(sums).subspan(1, part.parts), w.size);
         MeshData mesh;
+        if (w.rank == 0) {
+          mesh.tets.reserve(sums.back());
+          mine.points.reserve(num.total() - vm.dt.num_points());
+        }
         std::uint64_t bytes = 0;
         for (const par::Submesh& sub : mine.submeshes) {
           par::add_part(sub, num, listing->facet_markers, mesh, mine.figures.quality);
@@ -263,14 +270,16 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         joined.emplace();
         joined->sizes = par::gather_values(std::vector<std::uint64_t>{mesh.tets.size(), bytes});
         joined->vertices = num.total();
-        // Each array freed here once gathered (rank 0 then holds the whole mesh).
-        joined->points = par::gather_values(mine.points);
-        std::vector<Point>().swap(mine.points);
-        joined->mesh.tets = par::gather_values(mesh.tets);
-        std::vector<Tet>().swap(mesh.tets);
-        joined->mesh.faces = par::gather_values(mesh.faces);
-        std::vector<Tri>().swap(mesh.faces);
-        joined->mesh.face_markers = par::gather_values(mesh.face_markers);
+        // Rank 0's arrays take the others' parts; the others free each once it is sent.
+        par::gather_append(mine.points);
+        joined->points = std::move(mine.points);
+        par::gather_append(mesh.tets);
+        joined->mesh.tets = std::move(mesh.tets);
+        par::gather_append(mesh.faces);
+        joined->mesh.faces = std::move(mesh.faces);
+        par::gather_append(mesh.face_markers);
+        joined->mesh.face_markers = std::move(mesh.face_markers);
+        if (w.rank != 0) joined.reset();
       } else {
         mine.figures.quality = par::quality_of(mine.submeshes);
         {

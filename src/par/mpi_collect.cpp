@@ -47,7 +47,7 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine, std::size_t
 }
 
 void gather_into(std::span<const std::byte> mine, const std::function<std::byte*(std::size_t)>& out,
-                 std::size_t round_bytes) {
+                 std::size_t round_bytes, bool root_in_place) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
@@ -65,6 +65,9 @@ void gather_into(std::span<const std::byte> mine, const std::function<std::byte*
   const std::size_t total = start[n];
   const std::size_t most = *std::max_element(sizes.begin(), sizes.end());
   std::byte* const all = rank == 0 ? out(total) : nullptr;
+  // Rank 0's own bytes, read from its buffer when they are already there.
+  const bool in_place = root_in_place && rank == 0;
+  const std::byte* const own = in_place ? all : mine.data();
   // One round when it fits (the counts and offsets are ints), straight into `all`; else
   // rounds of at most `chunk` bytes per rank, n * chunk <= INT_MAX, through a buffer.
   const std::size_t chunk =
@@ -82,13 +85,13 @@ void gather_into(std::span<const std::byte> mine, const std::function<std::byte*
     }
     const int now = size > lo ? static_cast<int>(std::min<std::uint64_t>(chunk, size - lo)) : 0;
     if (rank == 0 && !one_round) buffer.resize(static_cast<std::size_t>(at));
-    check(MPI_Igatherv(mine.data() + (now > 0 ? lo : 0), now, MPI_BYTE,
+    check(MPI_Igatherv(in_place && one_round ? MPI_IN_PLACE : own + (now > 0 ? lo : 0), now, MPI_BYTE,
                        one_round ? all : buffer.data(), counts.data(), offsets.data(),
                        MPI_BYTE, 0, MPI_COMM_WORLD, &r),
           "MPI_Igatherv");
     wait_asleep(r);
     if (rank == 0 && !one_round)
-      for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t k = in_place ? 1 : 0; k < n; ++k)
         if (counts[k] > 0)
           std::memcpy(all + start[k] + lo, buffer.data() + offsets[k],
                       static_cast<std::size_t>(counts[k]));

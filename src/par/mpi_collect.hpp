@@ -30,9 +30,11 @@ std::vector<std::byte> gather_bytes(std::span<const std::byte> mine,
                                     std::size_t round_bytes = std::size_t{1} << 30);
 
 // The same, received where out(total) says at rank 0 (called there once, with the
-// total size, before anything is received; never elsewhere).
+// total size, before anything is received; never elsewhere). With `root_in_place`, the
+// buffer out(total) returns at rank 0 already begins with rank 0's bytes (`mine` may be
+// gone by then: they are not read there).
 void gather_into(std::span<const std::byte> mine, const std::function<std::byte*(std::size_t)>& out,
-                 std::size_t round_bytes = std::size_t{1} << 30);
+                 std::size_t round_bytes = std::size_t{1} << 30, bool root_in_place = false);
 
 // Every rank's values, concatenated in rank order, at rank 0 (empty elsewhere), received
 // in place (no second copy).
@@ -46,6 +48,22 @@ std::vector<T> gather_values(const std::vector<T>& mine) {
     return reinterpret_cast<std::byte*>(out.data());
   });
   return out;
+}
+
+// Every rank's values appended, in rank order, to rank 0's own `mine` (unchanged
+// elsewhere): rank 0's values are not copied, and nothing is moved when mine's capacity
+// already holds the total.
+template <class T>
+void gather_append(std::vector<T>& mine, std::size_t round_bytes = std::size_t{1} << 30) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  gather_into(
+      std::as_bytes(std::span(mine.data(), mine.size())),
+      [&](std::size_t total) {
+        if (total % sizeof(T) != 0) throw std::logic_error("gather_append: a rank sent part of a value");
+        mine.resize(total / sizeof(T));
+        return reinterpret_cast<std::byte*>(mine.data());
+      },
+      round_bytes, true);
 }
 
 // Every rank's figures, in rank order, at rank 0 (empty elsewhere).
