@@ -1,4 +1,4 @@
-// check_mesh: runs every checker in order over one shared, read-only Context.
+// check_mesh: runs every checker over one shared, read-only Context; the report lists them in one order.
 //
 // Order and gating: validity.indices and validity.coordinates come first; if either fails,
 // every other check is Skipped (indices and finite coordinates are preconditions of all
