@@ -41,24 +41,6 @@ constexpr Entry kChecks[] = {
     {"encroachment.subfacets", "§1.1, Lemma 1 (1): no vertex strictly inside a subfacet's equatorial sphere"},
 };
 
-class Timer {
- public:
-  Timer(Report& r, const Options& o) : report_(r), options_(o) {}
-  template <class F>
-  auto operator()(const char* phase, F&& f) {
-    if (options_.on_phase) options_.on_phase(phase);
-    const auto t0 = std::chrono::steady_clock::now();
-    auto result = f();
-    report_.seconds[phase] +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return result;
-  }
-
- private:
-  Report& report_;
-  const Options& options_;
-};
-
 void skip_rest(Report& rep, const std::string& reason) {
   for (const Entry& e : kChecks) {
     if (rep.find(e.id)) continue;
@@ -68,22 +50,22 @@ void skip_rest(Report& rep, const std::string& reason) {
   }
 }
 
-// Checks run in order on one thread, their results and times kept for the report.
+// Checks run one after another, their results and times kept for the report; `on_phase`
+// (Options::on_phase, or null) hears of each phase as it starts.
 class Group {
  public:
-  // `on_phase` (Options::on_phase, or null) hears of each phase as it starts.
-  explicit Group(const std::function<void(std::string_view)>* on_phase = nullptr)
-      : on_phase_(on_phase) {}
+  explicit Group(const std::function<void(std::string_view)>* on_phase) : on_phase_(on_phase) {}
   template <class F>
-  void time(const char* phase, F&& f) {
+  auto time(const char* phase, F&& f) {
     if (on_phase_ && *on_phase_) (*on_phase_)(phase);
     const auto t0 = std::chrono::steady_clock::now();
-    f();
+    auto result = f();
     seconds_.emplace_back(phase, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return result;
   }
   template <class F>
   void add(const char* phase, F&& f) {
-    time(phase, [&] { results_.push_back(f()); });
+    results_.push_back(time(phase, std::forward<F>(f)));
   }
   void report_into(Report& rep) {
     for (CheckResult& r : results_) rep.checks.push_back(std::move(r));
@@ -98,34 +80,6 @@ class Group {
   std::vector<std::pair<const char*, double>> seconds_;
 };
 
-// fill(group) on another thread (`concurrent`), or on the caller's when the group is asked
-// for; an exception reaches the caller there.
-// Progress is heard of only from groups run on the caller's thread.
-template <class F>
-class StartedGroup {
- public:
-  StartedGroup(bool concurrent, const Options& o, F fill)
-      : fill_(std::move(fill)),
-        group_(concurrent ? nullptr : &o.on_phase),
-        done_(std::async(concurrent ? std::launch::async : std::launch::deferred,
-                         [this] { fill_(group_); })) {}
-  Group& get() const {
-    done_.get();
-    return group_;
-  }
-  StartedGroup(const StartedGroup&) = delete;
-  StartedGroup& operator=(const StartedGroup&) = delete;
-
- private:
-  F fill_;
-  mutable Group group_;
-  std::shared_future<void> done_;
-};
-template <class F>
-StartedGroup<F> start_group(bool concurrent, const Options& o, F fill) {
-  return StartedGroup<F>(concurrent, o, std::move(fill));
-}
-
 Report run(const MeshView& mesh, const Plc* domain, Options o) {
   o.threads = std::max(1u, o.threads);
   Report rep;
@@ -133,7 +87,6 @@ Report run(const MeshView& mesh, const Plc* domain, Options o) {
   rep.tets = mesh.tets.size();
   rep.has_domain = domain != nullptr;
   rep.options = o;
-  Timer time(rep, o);
   rep.checks.push_back(check_indices(mesh, o));
   rep.checks.push_back(check_coordinates(mesh, o));
   if (!rep.ok()) {
@@ -144,39 +97,49 @@ Report run(const MeshView& mesh, const Plc* domain, Options o) {
   c.mesh = mesh;
   c.domain = domain;
   c.options = o;
-  rep.checks.push_back(time("orientation", [&] { return check_orientation(mesh, o, c.orientation); }));
-  c.topology = time("topology", [&] { return build_topology(mesh.tets, o.threads); });
+  Group front(&o.on_phase);
+  front.add("orientation", [&] { return check_orientation(mesh, o, c.orientation); });
+  c.topology = front.time("topology", [&] { return build_topology(mesh.tets, o.threads); });
   rep.boundary_faces = c.topology.boundary.size();
-  c.grid = time("grid", [&] { return PointGrid(mesh.points); });
+  c.grid = front.time("grid", [&] { return PointGrid(mesh.points); });
   // Three groups that read the context and nothing the others write: the validity of the
   // tetrahedralization, the domain's (map, conformity, encroachment), and the Delaunay and
   // quality checks (delaunay.empty_sphere fills circum_r2 for quality.ratio). The first two
-  // are mostly single-threaded, so with several threads they run beside the third instead
-  // of leaving cores idle. The report lists the results in kChecks' order either way.
+  // are mostly single-threaded, so with several threads they run on threads of their own
+  // beside the third instead of leaving cores idle (and then say nothing of their progress);
+  // with one, on the caller's when asked for. The report lists the results in kChecks'
+  // order either way.
   const bool concurrent = o.threads > 1;
-  const auto validity = start_group(concurrent, o, [&](Group& g) {
+  const auto policy = concurrent ? std::launch::async : std::launch::deferred;
+  const auto* const progress = concurrent ? nullptr : &o.on_phase;
+  auto validity = std::async(policy, [&] {
+    Group g(progress);
     g.add("validity", [&] { return check_duplicate_vertices(c); });
     g.add("validity", [&] { return check_unreferenced_vertices(c); });
     g.add("validity", [&] { return check_face_sharing(c); });
     g.add("validity", [&] { return check_boundary_closed(c); });
     g.add("validity", [&] { return check_listed_faces(c); });
     g.add("overlap", [&] { return check_overlap(c); });
+    return g;
   });
-  const auto conforming = start_group(concurrent && domain, o, [&](Group& g) {
-    if (!domain) return;
-    g.time("domain", [&] { c.domain_map = map_domain(*domain, mesh, c.topology, c.grid, o); });
+  auto conforming = std::async(domain ? policy : std::launch::deferred, [&] {
+    Group g(progress);
+    if (!domain) return g;
+    c.domain_map = g.time("domain", [&] { return map_domain(*domain, mesh, c.topology, c.grid, o); });
     g.add("conformity", [&] { return check_input_vertices(c); });
     g.add("conformity", [&] { return check_segments(c); });
     g.add("conformity", [&] { return check_facets(c); });
     g.add("conformity", [&] { return check_domain_volume(c); });
     g.add("encroachment", [&] { return check_subsegments_unencroached(c); });
     g.add("encroachment", [&] { return check_subfacets_unencroached(c); });
+    return g;
   });
   Group geometry(&o.on_phase);
   geometry.add("delaunay", [&] { return check_empty_circumspheres(c); });
   geometry.add("quality", [&] { return check_radius_edge_ratio(c); });
   geometry.add("quality", [&] { return check_shortest_edge(c); });
-  for (Group* g : {&validity.get(), &geometry, &conforming.get()}) g->report_into(rep);
+  Group checked_validity = validity.get(), checked_domain = conforming.get();
+  for (Group* g : {&front, &checked_validity, &geometry, &checked_domain}) g->report_into(rep);
   if (!domain) skip_rest(rep, "no domain given");
   return rep;
 }
