@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -49,7 +50,7 @@ struct FaceRef {
   // t, the sorted face followed by the apex is an even permutation of t exactly when this
   // is set; and the two holders of a face list it in opposite orientations exactly when
   // they differ here. The checks read it instead of the tet.
-  std::uint8_t odd = 0;
+  std::uint8_t odd;
 };
 
 // std::allocator, except that a resize leaves trivially constructible elements
@@ -74,6 +75,9 @@ struct UninitAllocator : std::allocator<T> {
 };
 template <class T>
 using FilledArray = std::vector<T, UninitAllocator<T>>;
+// (A default member initializer would make the resize write every element on one thread.)
+static_assert(std::is_trivially_default_constructible_v<FaceRef> &&
+              std::is_trivially_default_constructible_v<Tri>);
 
 struct Topology {
   FilledArray<Tri> faces;                 // distinct faces, vertex ids sorted, in lex order
