@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mesh/huge_pages.hpp"
 #include "par/affinity.hpp"
 #include "par/assembly.hpp"
 #include "par/mesh_parts.hpp"
@@ -258,8 +259,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         const par::VertexNumbers num(vm.dt.num_points(), std::span(sums).subspan(1, part.parts), w.size);
         MeshData mesh;
         if (w.rank == 0) {
-          mesh.tets.reserve(sums.back());
-          mine.points.reserve(num.total() - vm.dt.num_points());
+          reserve_huge(mesh.tets, sums.back());
+          reserve_huge(mine.points, num.total() - vm.dt.num_points());
         }
         std::uint64_t bytes = 0;
         for (const par::Submesh& sub : mine.submeshes) {

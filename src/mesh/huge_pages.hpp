@@ -8,6 +8,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -27,5 +29,42 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
   (void)bytes;
 #endif
 }
+
+// std::allocator, except that a block of at least one huge page is advised for huge pages
+// when it is allocated, before a growing vector copies into it. A growing array (the tet
+// store's records, a submesh's per-slot records) is then faulted in 2 MiB at a time rather
+// than 4 KiB: on a virtual machine where each page fault exits to the hypervisor, faulting
+// a large array in 4 KiB pages costs about as much as writing it many times over.
+template <class T>
+struct HugePageAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = HugePageAllocator<U>;
+  };
+  HugePageAllocator() = default;
+  template <class U>
+  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
+  T* allocate(std::size_t n) {
+    T* p = std::allocator<T>::allocate(n);
+    if (n * sizeof(T) >= (std::size_t{1} << 21)) advise_huge_pages(p, n * sizeof(T));
+    return p;
+  }
+};
+template <class T, class U>
+bool operator==(const HugePageAllocator<T>&, const HugePageAllocator<U>&) noexcept {
+  return true;
+}
+
+// Capacity for n elements, whose pages (still untouched past the size) are advised for
+// huge pages: for an array about to be filled, such as one that receives a message.
+template <class Vector>
+void reserve_huge(Vector& v, std::size_t n) {
+  v.reserve(n);
+  advise_huge_pages(v.data(), v.capacity() * sizeof(typename Vector::value_type));
+}
+
+// A vector whose large buffers are advised for huge pages (above).
+template <class T>
+using HugePageVector = std::vector<T, HugePageAllocator<T>>;
 
 }  // namespace pdr

@@ -39,6 +39,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/huge_pages.hpp"
+
 namespace pdr {
 
 using TetId = std::uint32_t;
@@ -178,7 +180,7 @@ class TetStore {
 
  private:
   static constexpr std::size_t kRecord = 8;  // 4 vertices + 4 neighbours per tet
-  std::vector<std::uint32_t> data_;
+  HugePageVector<std::uint32_t> data_;
   std::size_t max_slots_ = kMaxTetSlots;
   TetId free_head_ = kNoTet;
   std::size_t live_ = 0;

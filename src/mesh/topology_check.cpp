@@ -8,7 +8,6 @@
 
 #include "mesh/tables.hpp"
 #include "mesh/tet_store.hpp"
-#include "mesh/huge_pages.hpp"
 
 namespace pdr {
 
@@ -39,7 +38,6 @@ bool reversed_rotation(const std::array<VertexId, 3>& a, const std::array<Vertex
 
 void TetStore::reserve(std::size_t tets) {
   data_.reserve(kRecord * tets);
-  advise_huge_pages(data_.data(), data_.capacity() * sizeof(std::uint32_t));
 }
 
 std::vector<std::string> TetStore::check_topology() const {

@@ -199,7 +199,7 @@ class InsertionActor {
   Search s_;
   std::unordered_set<TetId> locked_;
   std::deque<Waiting> ready_;  // points, steps on ∂Ω, steps parked or set back
-  std::vector<QueuedTet> tets_;  // want(), in order; the first tets_head_ taken
+  HugePageVector<QueuedTet> tets_;  // want(), in order; the first tets_head_ taken
   std::size_t tets_head_ = 0;
   std::vector<Waiting> delayed_;
   std::vector<Waiting> parked_;  // local_step(): until the search ends

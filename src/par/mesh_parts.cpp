@@ -6,6 +6,7 @@
 #include <string>
 
 #include "geom/encroach.hpp"
+#include "mesh/huge_pages.hpp"
 #include "mesh/tables.hpp"
 #include "par/refinement_rules.hpp"
 
@@ -85,7 +86,7 @@ void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> f
               MeshData& out, refine::QualityRange& q) {
   const TetStore& st = s.store();
   const auto pts = s.points();
-  out.tets.reserve(out.tets.size() + s.real_tets());
+  reserve_huge(out.tets, out.tets.size() + s.real_tets());
   for (TetId t = 0; t < st.slots(); ++t) {
     if (constexpr TetId kAhead = 8; t + kAhead < st.slots())  // scattered points, meanwhile
       for (int k = 0; k < 4; ++k)
