@@ -257,6 +257,12 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   if (!needs_regions(vm, an.domain.plc, cells)) {
     listing.emplace();
     for (const auto& f : an.domain.plc.facets) listing->facet_markers.push_back(f.marker);
+    // TetGen's files alone and no check (which needs the whole mesh at rank 0): the ranks
+    // write their parts of the files themselves.
+    if (!args.check && !args.prefix.empty() &&
+        std::all_of(formats.begin(), formats.end(),
+                    [](io::MeshFormat f) { return f == io::MeshFormat::TetGen; }))
+      listing->write_prefix = args.prefix;
   }
   std::optional<ListedMesh> listed;
   std::optional<refine::RefineResult> refined =
@@ -297,26 +303,29 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                              rr.stats.audit_note);
 
   MeshData mesh = listed ? std::move(listed->mesh) : export_domain(vm, an.domain.plc, cells);
+  // The ranks wrote the files themselves: rank 0 has the mesh's counts, not the mesh.
+  const bool ranks_wrote = listed && !listed->written.empty();
+  const std::size_t vertices = ranks_wrote ? listed->vertices : mesh.points.size();
+  const std::size_t tets = ranks_wrote ? listed->tets : mesh.tets.size();
   // Remarks 1-2 (the order check, below): DT(V) is rebuilt on another thread from here,
   // while the summary is made, the files are written and the checker runs.
   const unsigned threads = par::threads_or_usable(args.threads);
   std::future<RebuiltDt> rebuilt;
   if (args.check) rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, threads > 1);
-  summary.set("vertices", mesh.points.size());
-  summary.set("tets", mesh.tets.size());
-  summary.set("boundary_faces", mesh.faces.size());
-  summary.set("tets_per_second",
-              t_refine > 0 ? static_cast<double>(mesh.tets.size()) / t_refine : 0.0);
+  summary.set("vertices", vertices);
+  summary.set("tets", tets);
+  summary.set("boundary_faces", ranks_wrote ? listed->faces : mesh.faces.size());
+  summary.set("tets_per_second", t_refine > 0 ? static_cast<double>(tets) / t_refine : 0.0);
   // The ranks' listing: their stores at the end (proxies and spare slots included), not
   // comparable with one assembled store.
   if (listed)
     summary.set("ranks_topology_bytes", listed->topology_bytes);
   else
     summary.set("topology_bytes", vm.dt.store().bytes_allocated());
-  if (ranks_quality && ranks_quality->tets != mesh.tets.size())
+  if (ranks_quality && ranks_quality->tets != tets)
     throw std::logic_error("the ranks' quality figures cover " +
                            std::to_string(ranks_quality->tets) + " tets, the mesh has " +
-                           std::to_string(mesh.tets.size()));
+                           std::to_string(tets));
   quality_summary(ranks_quality ? *ranks_quality : quality_of(mesh), summary);
   if (!rr.leftovers.empty()) {
     nlohmann::json left = nlohmann::json::array();
@@ -355,7 +364,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
                                  "lie on facets inside the domain: " +
                                  (rr.stop_reason.empty() ? std::string("their repair was refused")
                                                          : rr.stop_reason));
-  if (!args.prefix.empty()) {
+  if (ranks_wrote) {
+    summary.set("written", listed->written);
+  } else if (!args.prefix.empty()) {
     progress.phase("write");
     write_outputs(mesh, args.prefix, formats, timer, summary);
   }

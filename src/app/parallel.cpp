@@ -8,10 +8,16 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <span>
 #include <string>
+#include <system_error>
 
+#include "io/mesh_io.hpp"
+#include "io/tetgen_lines.hpp"
+#include "io/text_sink.hpp"
 #include "mesh/huge_pages.hpp"
 #include "par/affinity.hpp"
 #include "par/assembly.hpp"
@@ -20,6 +26,7 @@
 #include "par/mpi_transport.hpp"
 #include "par/par_refinement.hpp"
 #include "par/partition.hpp"
+#include "par/rank_files.hpp"
 #include "refine/budget.hpp"
 
 namespace pdr::app {
@@ -154,6 +161,60 @@ void print_table(const std::vector<par::RankFigures>& all) {
   if (!all.empty()) row("worst", all[worst]);
 }
 
+// A rank's part of the listed mesh, for the files the ranks write themselves: its inside
+// tets and boundary faces (in output vertex numbers) and the points its submeshes made,
+// in number order (par/mesh_parts.hpp).
+struct OwnPart {
+  MeshData mesh;
+  std::vector<Point> points;
+};
+
+// Every rank writes its lines of PREFIX.node, .ele and .face (io/tetgen_lines.hpp) at its
+// place in the files (par/rank_files.hpp): rank 0 the headers and M_o's points `m0`
+// first, then each rank its points, tets and faces in rank order (the order in which
+// rank 0 would have joined them), the last rank the tails. Collective; returns the mesh's
+// counts (vertices, tets, faces) on every rank.
+std::array<std::size_t, 3> write_parts(const std::string& prefix, const OwnPart& own,
+                                       std::span<const Point> m0, const World& w) {
+  const std::vector<std::uint64_t> counts =
+      par::all_values({own.points.size(), own.mesh.tets.size(), own.mesh.faces.size()});
+  std::array<std::size_t, 3> first{m0.size(), 0, 0}, total{m0.size(), 0, 0};
+  for (int r = 0; r < w.size; ++r)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto n = static_cast<std::size_t>(counts[3 * static_cast<std::size_t>(r) + k]);
+      total[k] += n;
+      if (r < w.rank) first[k] += n;
+    }
+  std::array<io::TextSink, 3> out;
+  // About the lines' length (their pages advised for huge pages: par/submesh.hpp's reason).
+  const std::array<std::size_t, 3> bytes{(own.points.size() + (w.rank == 0 ? m0.size() : 0)) * 72,
+                                         own.mesh.tets.size() * 48, own.mesh.faces.size() * 40};
+  for (std::size_t k = 0; k < 3; ++k) reserve_huge(out[k].text(), bytes[k] + 256);
+  const bool markers = total[2] > 0;  // as the joined mesh's face_markers (one per face)
+  if (w.rank == 0) {
+    io::tetgen_lines::node_header(out[0], total[0], false);
+    io::tetgen_lines::nodes(out[0], m0, 0, {});
+    io::tetgen_lines::ele_header(out[1], total[1], false);
+    io::tetgen_lines::face_header(out[2], total[2], markers);
+  }
+  io::tetgen_lines::nodes(out[0], own.points, first[0], {});
+  io::tetgen_lines::eles(out[1], own.mesh.tets, first[1], {});
+  io::tetgen_lines::faces(out[2], own.mesh.faces, first[2], own.mesh.face_markers);
+  if (w.rank == w.size - 1)
+    for (io::TextSink& o : out) io::tetgen_lines::tail(o);
+  if (w.rank == 0) {
+    // A directory that cannot be made is reported when its files cannot be created.
+    std::error_code ignored;
+    if (const auto parent = std::filesystem::path(prefix).parent_path(); !parent.empty())
+      std::filesystem::create_directories(parent, ignored);
+  }
+  const std::vector<std::string> paths = io::output_paths(prefix, io::MeshFormat::TetGen);
+  const std::array<std::string, 3> texts{std::move(out[0].text()), std::move(out[1].text()),
+                                         std::move(out[2].text())};
+  par::write_in_rank_order(paths, texts);  // false elsewhere than rank 0: rank 0 ends the run
+  return total;
+}
+
 }  // namespace
 
 World& world() {
@@ -203,6 +264,9 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     std::size_t vertices = 0;
   };
   std::optional<Joined> joined;
+  // This rank's part, when the ranks write the files themselves (Listing::write_prefix).
+  std::optional<OwnPart> own;
+  std::array<std::size_t, 3> own_counts{};  // the written mesh's vertices, tets, faces
   par::Partition part;
   // More submeshes than M_o can give (METIS would leave one empty): one per rank instead;
   // fewer tets than ranks: rank 0 refines alone. Every rank decides alike (same M_o, seed).
@@ -258,7 +322,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       if (sums[0] == 0) {
         const par::VertexNumbers num(vm.dt.num_points(), std::span(sums).subspan(1, part.parts), w.size);
         MeshData mesh;
-        if (w.rank == 0) {
+        const bool ranks_write = !listing->write_prefix.empty();
+        if (w.rank == 0 && !ranks_write) {
           reserve_huge(mesh.tets, sums.back());
           reserve_huge(mine.points, num.total() - vm.dt.num_points());
         }
@@ -271,16 +336,27 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         joined.emplace();
         joined->sizes = par::gather_values(std::vector<std::uint64_t>{mesh.tets.size(), bytes});
         joined->vertices = num.total();
-        // Rank 0's arrays take the others' parts; the others free each once it is sent.
-        par::gather_append(mine.points);
-        joined->points = std::move(mine.points);
-        par::gather_append(mesh.tets);
-        joined->mesh.tets = std::move(mesh.tets);
-        par::gather_append(mesh.faces);
-        joined->mesh.faces = std::move(mesh.faces);
-        par::gather_append(mesh.face_markers);
-        joined->mesh.face_markers = std::move(mesh.face_markers);
-        if (w.rank != 0) joined.reset();
+        if (ranks_write) {
+          // The boundary faces close a surface (below), checked before anything is written:
+          // every rank's odd edges, together at rank 0.
+          const std::vector<std::uint64_t> odd = par::gather_values(par::odd_edges(mesh.faces));
+          if (par::broadcast_from_root(w.rank != 0 || par::edges_pair_up(odd) ? 1 : 0) == 0)
+            throw std::logic_error("the ranks' parts: their boundary faces do not close a "
+                                   "surface (an edge in an odd number of them)");
+          own.emplace(OwnPart{std::move(mesh), std::move(mine.points)});
+          if (w.rank != 0) joined.reset();
+        } else {
+          // Rank 0's arrays take the others' parts; the others free each once it is sent.
+          par::gather_append(mine.points);
+          joined->points = std::move(mine.points);
+          par::gather_append(mesh.tets);
+          joined->mesh.tets = std::move(mesh.tets);
+          par::gather_append(mesh.faces);
+          joined->mesh.faces = std::move(mesh.faces);
+          par::gather_append(mesh.face_markers);
+          joined->mesh.face_markers = std::move(mesh.face_markers);
+          if (w.rank != 0) joined.reset();
+        }
       } else {
         mine.figures.quality = par::quality_of(mine.submeshes);
         {
@@ -301,6 +377,13 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                    e.what());
       par::MpiSession::abort(4);
     }
+  }
+  // Outside the phase's try: a file that cannot be written is the user's to mend (exit 2,
+  // as in the sequential command), not an internal error.
+  if (own) {
+    own_counts = write_parts(listing->write_prefix, *own, vm.dt.points(), w);
+    own.reset();
+    timer.lap("write");
   }
   if (w.rank != 0) return std::nullopt;
   // The other ranks are done; they sleep until rank 0 says how the run ended, so rank 0's
@@ -331,6 +414,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
                                            {"points", committed},
                                            {"points_absorbed", absorbed},
                                            {"listed_by_ranks", listed.has_value()},
+                                           {"written_by_ranks", listed && !listed->written.empty()},
                                            {"slowest_rank_seconds", slowest},
                                            {"per_rank", ranks}});
     if (!figures.empty()) print_table(figures);
@@ -341,6 +425,25 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     // what it would have returned (RefineOptions::resumed_h, no start tets).
     ListedMesh& out = listed.emplace();
     const std::size_t vertices = joined->vertices;
+    if (!listing->write_prefix.empty()) {
+      out.written = io::output_paths(listing->write_prefix, io::MeshFormat::TetGen);
+      out.vertices = own_counts[0], out.tets = own_counts[1], out.faces = own_counts[2];
+      for (std::size_t r = 0; r * 2 + 1 < joined->sizes.size(); ++r)
+        out.topology_bytes += joined->sizes[2 * r + 1];
+      if (out.vertices != vertices)
+        throw std::logic_error("the ranks' parts list " + std::to_string(out.vertices) +
+                               " points, their numbers " + std::to_string(vertices));
+      joined.reset();
+      report(vertices - vm.dt.num_points());
+      refine::RefineResult rr;
+      rr.stats.h = std::numeric_limits<double>::infinity();
+      rr.stats.h_theorem = refine::theorem_h(shortest_t0, opt);
+      rr.stats.vertex_cap = cap;
+      rr.tets_unchanged = true;
+      quality.emplace();
+      for (const par::RankFigures& f : figures) quality->merge(f.quality);
+      return rr;
+    }
     out.mesh.points.reserve(vertices);
     out.mesh.points.assign(vm.dt.points().begin(), vm.dt.points().end());
     out.mesh.points.insert(out.mesh.points.end(), joined->points.begin(), joined->points.end());
@@ -367,7 +470,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     refine::RefineResult rr;
     rr.stats.h = std::numeric_limits<double>::infinity();
     rr.stats.h_theorem = refine::theorem_h(shortest_t0, opt);
-    rr.stats.vertex_cap = refine::VertexBudget(out.mesh.points, opt).cap();
+    rr.stats.vertex_cap = cap;  // the sequential command's (its base: T_o)
     rr.tets_unchanged = true;
     quality.emplace();
     for (const par::RankFigures& f : figures) quality->merge(f.quality);

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "app/partitioned_output.hpp"
@@ -52,11 +53,19 @@ struct ListedMesh {
   MeshData mesh;                        // points, inside tets, boundary faces and markers
   std::vector<std::uint32_t> tet_rank;  // the rank that listed each tet
   std::uint64_t topology_bytes = 0;     // the ranks' tet stores at the end
+  // When the ranks wrote the files themselves (Listing::write_prefix): the files, and the
+  // mesh's counts (`mesh` and `tet_rank` are then empty).
+  std::vector<std::string> written;
+  std::size_t vertices = 0, tets = 0, faces = 0;
 };
 
-// What the ranks need to list it: the markers of D's facets (0 beyond).
+// What the ranks need to list it: the markers of D's facets (0 beyond). With a
+// `write_prefix`, each rank writes its part of PREFIX.node, .ele and .face itself
+// (par/rank_files.hpp) instead of sending it to rank 0: for a run whose only output is
+// TetGen's files and that is not checked (the check needs the whole mesh at rank 0).
 struct Listing {
   std::vector<int> facet_markers;
+  std::string write_prefix;
 };
 
 // The refinement of vm by every rank of the run (world().size > 1). On rank 0: the result of

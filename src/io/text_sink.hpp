@@ -1,5 +1,6 @@
-// TextSink: buffered formatting into an AtomicFile for the writers. Numbers are formatted
-// with std::to_chars: integers exactly, doubles in the shortest form that reads back to the
+// TextSink: buffered formatting into an AtomicFile for the writers, or into memory (a part
+// of a file that several processes write: par/rank_files.hpp). Numbers are formatted with
+// std::to_chars: integers exactly, doubles in the shortest form that reads back to the
 // same bits (so a write/read round trip is bit-exact). The buffer is handed to the file in
 // chunks of about 1 MiB; flush() must be called before the file is committed.
 #pragma once
@@ -16,7 +17,10 @@ namespace pdr::io {
 
 class TextSink {
  public:
-  explicit TextSink(AtomicFile& file) : file_(file) { buf_.reserve(kChunk + 256); }
+  explicit TextSink(AtomicFile& file) : file_(&file) { buf_.reserve(kChunk + 256); }
+  // Into memory: everything stays in text() (flush() does nothing).
+  TextSink() = default;
+  std::string& text() { return buf_; }
 
   TextSink& put(std::string_view s) {
     buf_.append(s);
@@ -39,7 +43,8 @@ class TextSink {
   }
 
   void flush() {
-    file_.write(buf_);
+    if (file_ == nullptr) return;
+    file_->write(buf_);
     buf_.clear();
   }
 
@@ -55,10 +60,10 @@ class TextSink {
     return *this;
   }
   void maybe_flush() {
-    if (buf_.size() >= kChunk) flush();
+    if (file_ != nullptr && buf_.size() >= kChunk) flush();
   }
 
-  AtomicFile& file_;
+  AtomicFile* file_ = nullptr;
   std::string buf_;
 };
 

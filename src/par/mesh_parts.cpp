@@ -107,7 +107,24 @@ void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> f
   }
 }
 
-bool surface_closed(std::span<const Tri> faces) {
+namespace {
+
+// The values that occur an odd number of times in `v`, sorted (v is sorted in place).
+std::vector<std::uint64_t> odd_ones(std::vector<std::uint64_t>& v) {
+  std::sort(v.begin(), v.end());
+  std::vector<std::uint64_t> odd;
+  for (std::size_t i = 0; i < v.size();) {
+    std::size_t j = i;
+    while (j < v.size() && v[j] == v[i]) ++j;
+    if ((j - i) % 2 != 0) odd.push_back(v[i]);
+    i = j;
+  }
+  return odd;
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> odd_edges(std::span<const Tri> faces) {
   std::vector<std::uint64_t> edges;
   edges.reserve(3 * faces.size());
   for (const Tri& f : faces)
@@ -115,14 +132,11 @@ bool surface_closed(std::span<const Tri> faces) {
       const std::uint64_t a = f[static_cast<std::size_t>(i)], b = f[static_cast<std::size_t>((i + 1) % 3)];
       edges.push_back(std::min(a, b) << 32 | std::max(a, b));
     }
-  std::sort(edges.begin(), edges.end());
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if ((j - i) % 2 != 0) return false;
-    i = j;
-  }
-  return true;
+  return odd_ones(edges);
 }
+
+bool edges_pair_up(std::vector<std::uint64_t> edges) { return odd_ones(edges).empty(); }
+
+bool surface_closed(std::span<const Tri> faces) { return odd_edges(faces).empty(); }
 
 }  // namespace pdr::par

@@ -71,4 +71,11 @@ void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> f
 // (the boundary of the domain, or of several bodies touching along edges).
 bool surface_closed(std::span<const Tri> faces);
 
+// The edges of an odd number of `faces`, as min << 32 | max of their vertex numbers,
+// sorted. A surface listed in parts closes exactly when the parts' odd edges, all
+// together, pair up (`edges_pair_up`: every value an even number of times): an edge's
+// count over the whole surface is the sum of its counts in the parts.
+std::vector<std::uint64_t> odd_edges(std::span<const Tri> faces);
+bool edges_pair_up(std::vector<std::uint64_t> edges);
+
 }  // namespace pdr::par

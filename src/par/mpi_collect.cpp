@@ -16,6 +16,8 @@
 namespace pdr::par {
 namespace {
 
+constexpr auto kIntMax = static_cast<std::size_t>(std::numeric_limits<int>::max());
+
 void check(int rc, const char* what) {
   if (rc != MPI_SUCCESS) throw std::runtime_error(std::string("mpi: ") + what + " failed");
 }
@@ -52,7 +54,6 @@ void gather_into(std::span<const std::byte> mine, const std::function<std::byte*
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const auto n = static_cast<std::size_t>(ranks);
-  constexpr auto kIntMax = static_cast<std::size_t>(std::numeric_limits<int>::max());
   // Every rank learns every size, so all agree on the rounds.
   const std::uint64_t size = mine.size();
   std::vector<std::uint64_t> sizes(n);
@@ -109,6 +110,34 @@ int broadcast_from_root(int value) {
   check(MPI_Ibcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD, &r), "MPI_Ibcast");
   wait_asleep(r);
   return value;
+}
+
+std::string broadcast_from_root(const std::string& text) {
+  int rank = 0;
+  check(MPI_Comm_rank(MPI_COMM_WORLD, &rank), "MPI_Comm_rank");
+  if (text.size() > kIntMax) throw std::length_error("broadcast_from_root: text too long");
+  const int size = broadcast_from_root(static_cast<int>(text.size()));
+  std::string out = rank == 0 ? text : std::string(static_cast<std::size_t>(size), '\0');
+  if (size == 0) return out;
+  MPI_Request r = MPI_REQUEST_NULL;
+  check(MPI_Ibcast(out.data(), size, MPI_CHAR, 0, MPI_COMM_WORLD, &r), "MPI_Ibcast");
+  wait_asleep(r);
+  return out;
+}
+
+std::vector<std::uint64_t> all_values(const std::vector<std::uint64_t>& mine) {
+  int ranks = 1;
+  check(MPI_Comm_size(MPI_COMM_WORLD, &ranks), "MPI_Comm_size");
+  if (mine.size() * static_cast<std::size_t>(ranks) > kIntMax)
+    throw std::length_error("all_values: too many values");
+  std::vector<std::uint64_t> out(mine.size() * static_cast<std::size_t>(ranks));
+  if (mine.empty()) return out;
+  MPI_Request r = MPI_REQUEST_NULL;
+  check(MPI_Iallgather(mine.data(), static_cast<int>(mine.size()), MPI_UINT64_T, out.data(),
+                       static_cast<int>(mine.size()), MPI_UINT64_T, MPI_COMM_WORLD, &r),
+        "MPI_Iallgather");
+  wait_asleep(r);
+  return out;
 }
 
 std::vector<std::uint64_t> sum_over_ranks(const std::vector<std::uint64_t>& values) {

@@ -12,6 +12,7 @@
 #include <functional>
 #include <stdexcept>
 #include <span>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -71,6 +72,13 @@ std::vector<RankFigures> gather_figures(const RankFigures& mine);
 
 // Rank 0's value on every rank; the other ranks wait for it asleep (at most 1 ms late).
 int broadcast_from_root(int value);
+
+// Rank 0's text on every rank (the others' `text` is ignored), waiting asleep.
+std::string broadcast_from_root(const std::string& text);
+
+// Every rank's values, concatenated in rank order, on every rank (the same count on every
+// rank), waiting asleep.
+std::vector<std::uint64_t> all_values(const std::vector<std::uint64_t>& mine);
 
 // The element-wise maximum of `values` over the ranks, on every rank (waiting asleep).
 std::array<int, 2> max_over_ranks(std::array<int, 2> values);

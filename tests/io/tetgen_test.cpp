@@ -4,6 +4,7 @@
 
 #include "io/mesh_io.hpp"
 #include "io/tetgen.hpp"
+#include "io/tetgen_lines.hpp"
 #include "io_test_util.hpp"
 
 namespace pdr::io::test {
@@ -41,6 +42,47 @@ TEST(TetgenMesh, ZeroBasedTenNodeTetsAndNeighbourFaces) {
   EXPECT_EQ(m.faces, (std::vector<Tri>{{0, 2, 1}, {0, 1, 3}}));
   EXPECT_TRUE(m.face_markers.empty());
   EXPECT_EQ(face_orientation(m).positive, 2u);
+}
+
+// The files formatted in parts (io/tetgen_lines.hpp: the ranks' writer, each rank its own
+// run of entities, par/rank_files.hpp) are byte for byte the whole writer's, with and
+// without the optional columns, cut anywhere (an empty part too).
+TEST(TetgenMesh, LinesInPartsAreTheWholeWritersFiles) {
+  const auto slurp = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  MeshData bare = cube_mesh();
+  bare.point_markers.clear();
+  bare.tet_regions.clear();
+  for (const MeshData& m : {cube_mesh(), bare}) {
+    ScratchDir dir;
+    write_tetgen_mesh(m, dir / "m");
+    const std::string node = slurp(dir / "m.node"), ele = slurp(dir / "m.ele"),
+                      face = slurp(dir / "m.face");
+    for (std::size_t cut = 0; cut <= 6; ++cut) {  // parts [0, cut) and [cut, n)
+      const auto part = [&](auto&& lines, const auto& all, const auto& extra, std::size_t n) {
+        const std::size_t c = std::min(cut, n);
+        TextSink a, b;
+        lines(a, std::span(all).first(c), 0,
+              extra.empty() ? std::span<const int>() : std::span<const int>(extra).first(c));
+        lines(b, std::span(all).subspan(c), c,
+              extra.empty() ? std::span<const int>() : std::span<const int>(extra).subspan(c));
+        tetgen_lines::tail(b);
+        return a.text() + b.text();
+      };
+      TextSink hn, he, hf;
+      tetgen_lines::node_header(hn, m.points.size(), !m.point_markers.empty());
+      tetgen_lines::ele_header(he, m.tets.size(), !m.tet_regions.empty());
+      tetgen_lines::face_header(hf, m.faces.size(), !m.face_markers.empty());
+      EXPECT_EQ(hn.text() + part(tetgen_lines::nodes, m.points, m.point_markers, m.points.size()), node)
+          << "cut " << cut;
+      EXPECT_EQ(he.text() + part(tetgen_lines::eles, m.tets, m.tet_regions, m.tets.size()), ele)
+          << "cut " << cut;
+      EXPECT_EQ(hf.text() + part(tetgen_lines::faces, m.faces, m.face_markers, m.faces.size()), face)
+          << "cut " << cut;
+    }
+  }
 }
 
 TEST(TetgenMesh, FaceFileIsOptional) {

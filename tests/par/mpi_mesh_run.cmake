@@ -12,6 +12,10 @@
 #                         for it (parallel.per_rank[r].deferred.cap)
 #   [-DWANT_LISTED=ON|OFF] the ranks listed the mesh themselves (parallel.listed_by_ranks:
 #                         par/mesh_parts.hpp), or rank 0 assembled it
+#   [-DWANT_WRITTEN=ON|OFF] the ranks wrote their parts of OUT.node/.ele/.face themselves
+#                         (parallel.written_by_ranks: par/rank_files.hpp), or rank 0 did;
+#                         either way `pdr check OUT --domain DOMAIN --ratio 2` passes on
+#                         the files, which hold the summary's counts
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 execute_process(
   COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${PDR} mesh ${DOMAIN} -o ${OUT} ${args} --json
@@ -77,6 +81,28 @@ if(DEFINED WANT_LISTED)
   if((WANT_LISTED AND NOT listed) OR (NOT WANT_LISTED AND listed))
     message(FATAL_ERROR "parallel.listed_by_ranks: ${listed}, expected ${WANT_LISTED}\n${out}")
   endif()
+endif()
+if(DEFINED WANT_WRITTEN)
+  string(JSON written GET "${out}" parallel written_by_ranks)
+  if((WANT_WRITTEN AND NOT written) OR (NOT WANT_WRITTEN AND written))
+    message(FATAL_ERROR "parallel.written_by_ranks: ${written}, expected ${WANT_WRITTEN}\n${out}")
+  endif()
+  execute_process(COMMAND ${PDR} check ${OUT} --domain ${DOMAIN} --ratio 2 --json
+                  RESULT_VARIABLE crc OUTPUT_VARIABLE report ERROR_VARIABLE cerr TIMEOUT 300)
+  string(JSON ok GET "${report}" ok)
+  if(NOT crc EQUAL 0 OR NOT ok)
+    message(FATAL_ERROR "pdr check ${OUT}: exit ${crc}\n${report}\n${cerr}")
+  endif()
+  foreach(pair "node;vertices" "ele;tets" "face;boundary_faces")
+    list(GET pair 0 ext)
+    list(GET pair 1 key)
+    file(STRINGS "${OUT}.${ext}" first LIMIT_COUNT 1)
+    string(REGEX MATCH "^[0-9]+" n "${first}")
+    string(JSON want GET "${out}" ${key})
+    if(NOT n EQUAL want)
+      message(FATAL_ERROR "${OUT}.${ext} lists ${n}, the summary's ${key} is ${want}")
+    endif()
+  endforeach()
 endif()
 if(WANT_ONCE)
   string(REGEX MATCHALL "${WANT_ONCE}" hits "${err}")

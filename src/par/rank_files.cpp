@@ -1,0 +1,101 @@
+// Files written by every rank at once; see par/rank_files.hpp.
+#include "par/rank_files.hpp"
+
+#include <fcntl.h>
+#include <mpi.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <system_error>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+#include "par/mpi_collect.hpp"
+
+namespace pdr::par {
+namespace {
+
+// Writes `bytes` into the existing file `path` from `offset` on; 0, or the errno of the
+// failure.
+int write_at(const std::string& path, const std::string& bytes, std::uint64_t offset) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);  // never creates it
+  if (fd < 0) return errno;
+  int err = 0;
+  for (std::size_t done = 0; done < bytes.size() && err == 0;) {
+    const ::ssize_t n = ::pwrite(fd, bytes.data() + done, bytes.size() - done,
+                                 static_cast<::off_t>(offset + done));
+    if (n < 0 && errno != EINTR) err = errno;
+    if (n > 0) done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0 && err == 0) err = errno;
+  return err;
+}
+
+}  // namespace
+
+bool write_in_rank_order(std::span<const std::string> paths, std::span<const std::string> bytes) {
+  if (paths.size() != bytes.size())
+    throw std::logic_error("write_in_rank_order: a part for every file");
+  int rank = 0;
+  if (MPI_Comm_rank(MPI_COMM_WORLD, &rank) != MPI_SUCCESS)
+    throw std::runtime_error("mpi: MPI_Comm_rank failed");
+  // Rank 0's temporaries, removed unless committed.
+  std::vector<std::unique_ptr<io::AtomicFile>> files;
+  std::exception_ptr created;  // rank 0's failure to create them
+  std::string names;
+  if (rank == 0) {
+    try {
+      for (const std::string& p : paths) {
+        files.push_back(std::make_unique<io::AtomicFile>(p));
+        names += files.back()->temp_path();
+        names.push_back('\0');
+      }
+    } catch (const std::system_error&) {
+      created = std::current_exception();
+      files.clear();
+    }
+  }
+  if (broadcast_from_root(created ? 1 : 0) != 0) {
+    if (rank == 0) std::rethrow_exception(created);
+    return false;
+  }
+  names = broadcast_from_root(names);
+  // Where this rank's bytes go: after the ranks' before it, file by file.
+  std::vector<std::uint64_t> sizes;
+  for (const std::string& b : bytes) sizes.push_back(b.size());
+  const std::vector<std::uint64_t> all = all_values(sizes);
+  int err = 0;
+  std::size_t at = 0, failed_file = 0;
+  for (std::size_t k = 0; k < paths.size() && err == 0; ++k) {
+    const std::size_t end = names.find('\0', at);
+    const std::string temp = names.substr(at, end - at);
+    at = end + 1;
+    std::uint64_t offset = 0;
+    for (int r = 0; r < rank; ++r) offset += all[static_cast<std::size_t>(r) * paths.size() + k];
+    err = write_at(temp, bytes[k], offset);
+    failed_file = k;
+  }
+  // A rank that failed (every rank learns the last one, and an errno of the failures).
+  const std::array<int, 2> failed = max_over_ranks({err != 0 ? rank + 1 : 0, err});
+  if (failed[0] == 0) {
+    if (rank == 0) {
+      std::vector<io::AtomicFile*> raw;
+      for (auto& f : files) raw.push_back(f.get());
+      io::commit_all(raw);
+    }
+    return true;
+  }
+  if (rank != 0) return false;
+  const int who = failed[0] - 1;
+  throw std::system_error(failed[1], std::generic_category(),
+                          who == 0 ? "cannot write '" + paths[failed_file] + "'"
+                                   : "rank " + std::to_string(who) +
+                                         " cannot write its part of the output files");
+}
+
+}  // namespace pdr::par
