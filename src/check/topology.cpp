@@ -33,11 +33,11 @@ std::uint8_t odd(const Tri& f) {
 
 // One block of vertices' share of the topology, with face indices local to the block.
 struct Part {
-  std::vector<Tri> faces;
-  std::vector<std::uint32_t> face_start;  // local offsets into refs
-  std::vector<FaceRef> refs;
-  std::vector<std::uint32_t> boundary;    // local face indices
-  std::vector<std::uint64_t> edges;
+  HugePageVector<Tri> faces;
+  HugePageVector<std::uint32_t> face_start;  // local offsets into refs
+  HugePageVector<FaceRef> refs;
+  HugePageVector<std::uint32_t> boundary;    // local face indices
+  HugePageVector<std::uint64_t> edges;
 };
 
 }  // namespace
@@ -62,7 +62,7 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads, std::size_t
   std::uint32_t n = 0;
   for (const Tet& t : tets)
     for (std::uint32_t v : t) n = std::max(n, v + 1);
-  std::vector<std::uint32_t> start(std::size_t{n} + 1, 0);
+  HugePageVector<std::uint32_t> start(std::size_t{n} + 1, 0);
   auto distinct = [](const Tet& t, int i) {
     for (int j = 0; j < i; ++j)
       if (t[j] == t[i]) return false;
@@ -72,9 +72,9 @@ Topology build_topology(std::span<const Tet> tets, unsigned threads, std::size_t
     for (int i = 0; i < 4; ++i)
       if (distinct(t, i)) ++start[t[i] + 1];
   for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> inc(start[n]);
+  HugePageVector<std::uint32_t> inc(start[n]);
   {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    HugePageVector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < tets.size(); ++t)
       for (int i = 0; i < 4; ++i)
         if (distinct(tets[t], i)) inc[fill[tets[t][i]]++] = static_cast<std::uint32_t>(t);

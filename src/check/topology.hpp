@@ -21,8 +21,9 @@
 #include <utility>
 #include <vector>
 
-#include "check/check.hpp"
 
+#include "check/check.hpp"
+#include "mesh/huge_pages.hpp"
 namespace pdr::check {
 
 inline constexpr std::array<std::array<int, 3>, 4> kFaceVertices = {
@@ -53,11 +54,12 @@ struct FaceRef {
   std::uint8_t odd;
 };
 
-// std::allocator, except that a resize leaves trivially constructible elements
-// uninitialized: the topology's arrays are sized once, then filled by every thread, each
-// faulting in its own pages, instead of first zeroed by one.
+// mesh/huge_pages.hpp's allocator (large arrays advised for huge pages), except that a
+// resize leaves trivially constructible elements uninitialized: the topology's arrays are
+// sized once, then filled by every thread, each faulting in its own pages, instead of
+// first zeroed by one.
 template <class T>
-struct UninitAllocator : std::allocator<T> {
+struct UninitAllocator : HugePageAllocator<T> {
   template <class U>
   struct rebind {
     using other = UninitAllocator<U>;
