@@ -257,9 +257,9 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
   if (!needs_regions(vm, an.domain.plc, cells)) {
     listing.emplace();
     for (const auto& f : an.domain.plc.facets) listing->facet_markers.push_back(f.marker);
-    // TetGen's files alone and no check (which needs the whole mesh at rank 0): the ranks
-    // write their parts of the files themselves.
-    if (!args.check && !args.prefix.empty() &&
+    // TetGen's files alone, no check (which needs the whole mesh at rank 0) and no
+    // caller that wants the mesh: the ranks write their parts of the files themselves.
+    if (!args.check && !args.prefix.empty() && mesh_out == nullptr &&
         std::all_of(formats.begin(), formats.end(),
                     [](io::MeshFormat f) { return f == io::MeshFormat::TetGen; }))
       listing->write_prefix = args.prefix;

@@ -1,6 +1,8 @@
 // The `pdr` executable's operator new: as the standard library's (std::malloc, the new
 // handler, std::bad_alloc), except that a block of at least 4 MiB is advised for huge
-// pages (mesh/huge_pages.hpp) as soon as it is allocated, before anything touches it. The
+// pages (mesh/huge_pages.hpp) as soon as it is allocated, before the caller touches it
+// (malloc may hand out heap memory that an earlier block already faulted in). Not in
+// sanitizer builds, whose own operator new checks new/delete pairs. The
 // kernel's own growing arrays are advised where they grow (HugePageVector); this reaches
 // every other large array of a run, the checker's, the readers' and the writers' among
 // them. Why: on a virtual machine where each page fault exits to the hypervisor, faulting

@@ -20,6 +20,7 @@
 #include "mesh/tet_store.hpp"
 #include "par/affinity.hpp"
 #include "par/mpi_transport.hpp"
+#include "par/rank_files.hpp"
 
 namespace {
 
@@ -134,6 +135,11 @@ int run_ranks(int argc, char** argv) {
   try {
     code = dispatch(argc, argv);
   } catch (const pdr::InputError& e) {
+    std::cerr << "pdr: " << e.what() << "\n";
+    code = kExitBadInput;
+  } catch (const pdr::par::RankFilesError& e) {
+    // Rank 0 alone, with every rank past the write (par/rank_files.hpp): said once, and
+    // every rank ends with its exit 2 below.
     std::cerr << "pdr: " << e.what() << "\n";
     code = kExitBadInput;
   } catch (const RunAbandoned&) {

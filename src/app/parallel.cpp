@@ -167,6 +167,8 @@ void print_table(const std::vector<par::RankFigures>& all) {
 struct OwnPart {
   MeshData mesh;
   std::vector<Point> points;
+  std::uint64_t quality_tets = 0;  // the tets its quality figures cover
+  std::size_t vertices = 0;        // the output's vertices (par::VertexNumbers::total)
 };
 
 // Every rank writes its lines of PREFIX.node, .ele and .face (io/tetgen_lines.hpp) at its
@@ -176,17 +178,31 @@ struct OwnPart {
 // counts (vertices, tets, faces) on every rank.
 std::array<std::size_t, 3> write_parts(const std::string& prefix, const OwnPart& own,
                                        std::span<const Point> m0, const World& w) {
-  const std::vector<std::uint64_t> counts =
-      par::all_values({own.points.size(), own.mesh.tets.size(), own.mesh.faces.size()});
+  // Per rank: points, tets, faces, and the tets its quality figures cover.
+  const std::vector<std::uint64_t> counts = par::all_values(
+      {own.points.size(), own.mesh.tets.size(), own.mesh.faces.size(), own.quality_tets});
   std::array<std::size_t, 3> first{m0.size(), 0, 0}, total{m0.size(), 0, 0};
-  for (int r = 0; r < w.size; ++r)
+  std::size_t quality_tets = 0;
+  for (int r = 0; r < w.size; ++r) {
+    const std::size_t row = 4 * static_cast<std::size_t>(r);
     for (std::size_t k = 0; k < 3; ++k) {
-      const auto n = static_cast<std::size_t>(counts[3 * static_cast<std::size_t>(r) + k]);
+      const auto n = static_cast<std::size_t>(counts[row + k]);
       total[k] += n;
       if (r < w.rank) first[k] += n;
     }
+    quality_tets += static_cast<std::size_t>(counts[row + 3]);
+  }
+  // What the joined path checks before it writes; every rank finds it alike, rank 0 says
+  // it (an internal error) and the others write nothing.
+  if (total[0] != own.vertices || quality_tets != total[1]) {
+    if (w.rank != 0) return total;
+    throw std::logic_error("the ranks' parts list " + std::to_string(total[0]) + " points (their " +
+                           "numbers " + std::to_string(own.vertices) + ") and " +
+                           std::to_string(total[1]) + " tets (their quality figures " +
+                           std::to_string(quality_tets) + ")");
+  }
   std::array<io::TextSink, 3> out;
-  // About the lines' length (their pages advised for huge pages: par/submesh.hpp's reason).
+  // About the lines' length (their pages advised for huge pages: mesh/huge_pages.hpp).
   const std::array<std::size_t, 3> bytes{(own.points.size() + (w.rank == 0 ? m0.size() : 0)) * 72,
                                          own.mesh.tets.size() * 48, own.mesh.faces.size() * 40};
   for (std::size_t k = 0; k < 3; ++k) reserve_huge(out[k].text(), bytes[k] + 256);
@@ -326,6 +342,10 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         if (w.rank == 0 && !ranks_write) {
           reserve_huge(mesh.tets, sums.back());
           reserve_huge(mine.points, num.total() - vm.dt.num_points());
+        } else if (ranks_write) {
+          std::size_t mine_tets = 0;
+          for (const par::Submesh& sub : mine.submeshes) mine_tets += sub.real_tets();
+          reserve_huge(mesh.tets, mine_tets);
         }
         std::uint64_t bytes = 0;
         for (const par::Submesh& sub : mine.submeshes) {
@@ -339,11 +359,15 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
         if (ranks_write) {
           // The boundary faces close a surface (below), checked before anything is written:
           // every rank's odd edges, together at rank 0.
+          // If they do not, rank 0 says so (an internal error) and the others write nothing.
           const std::vector<std::uint64_t> odd = par::gather_values(par::odd_edges(mesh.faces));
-          if (par::broadcast_from_root(w.rank != 0 || par::edges_pair_up(odd) ? 1 : 0) == 0)
+          const bool closed = par::broadcast_from_root((w.rank != 0 || par::edges_pair_up(odd)) ? 1 : 0) != 0;
+          if (!closed && w.rank == 0)
             throw std::logic_error("the ranks' parts: their boundary faces do not close a "
                                    "surface (an edge in an odd number of them)");
-          own.emplace(OwnPart{std::move(mesh), std::move(mine.points)});
+          if (closed)
+            own.emplace(OwnPart{std::move(mesh), std::move(mine.points), mine.figures.quality.tets,
+                                num.total()});
           if (w.rank != 0) joined.reset();
         } else {
           // Rank 0's arrays take the others' parts; the others free each once it is sent.
@@ -425,24 +449,27 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     // what it would have returned (RefineOptions::resumed_h, no start tets).
     ListedMesh& out = listed.emplace();
     const std::size_t vertices = joined->vertices;
-    if (!listing->write_prefix.empty()) {
-      out.written = io::output_paths(listing->write_prefix, io::MeshFormat::TetGen);
-      out.vertices = own_counts[0], out.tets = own_counts[1], out.faces = own_counts[2];
-      for (std::size_t r = 0; r * 2 + 1 < joined->sizes.size(); ++r)
-        out.topology_bytes += joined->sizes[2 * r + 1];
-      if (out.vertices != vertices)
-        throw std::logic_error("the ranks' parts list " + std::to_string(out.vertices) +
-                               " points, their numbers " + std::to_string(vertices));
-      joined.reset();
+    const auto unchanged = [&] {
       report(vertices - vm.dt.num_points());
       refine::RefineResult rr;
       rr.stats.h = std::numeric_limits<double>::infinity();
       rr.stats.h_theorem = refine::theorem_h(shortest_t0, opt);
-      rr.stats.vertex_cap = cap;
+      rr.stats.vertex_cap = cap;  // the sequential command's (its base: T_o)
       rr.tets_unchanged = true;
       quality.emplace();
       for (const par::RankFigures& f : figures) quality->merge(f.quality);
       return rr;
+    };
+    for (std::size_t r = 0; r * 2 + 1 < joined->sizes.size(); ++r)
+      out.topology_bytes += joined->sizes[2 * r + 1];
+    if (!listing->write_prefix.empty()) {
+      // The ranks wrote the files (write_parts checked the counts before).
+      out.written = io::output_paths(listing->write_prefix, io::MeshFormat::TetGen);
+      out.vertices = own_counts[0];
+      out.tets = own_counts[1];
+      out.faces = own_counts[2];
+      joined.reset();
+      return unchanged();
     }
     out.mesh.points.reserve(vertices);
     out.mesh.points.assign(vm.dt.points().begin(), vm.dt.points().end());
@@ -453,10 +480,8 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
     out.mesh.tets = std::move(joined->mesh.tets);
     out.mesh.faces = std::move(joined->mesh.faces);
     out.mesh.face_markers = std::move(joined->mesh.face_markers);
-    for (std::size_t r = 0; r * 2 + 1 < joined->sizes.size(); ++r) {
+    for (std::size_t r = 0; r * 2 + 1 < joined->sizes.size(); ++r)
       out.tet_rank.insert(out.tet_rank.end(), joined->sizes[2 * r], static_cast<std::uint32_t>(r));
-      out.topology_bytes += joined->sizes[2 * r + 1];
-    }
     joined.reset();
     if (out.tet_rank.size() != out.mesh.tets.size())
       throw std::logic_error("the ranks' parts: tet counts do not add up");
@@ -466,15 +491,7 @@ std::optional<refine::RefineResult> refine_in_parallel(refine::VolumeMesh& vm,
       throw std::logic_error("the ranks' parts: their boundary faces do not close a surface "
                              "(an edge in an odd number of them)");
     seconds += timer.lap("join");
-    report(vertices - vm.dt.num_points());
-    refine::RefineResult rr;
-    rr.stats.h = std::numeric_limits<double>::infinity();
-    rr.stats.h_theorem = refine::theorem_h(shortest_t0, opt);
-    rr.stats.vertex_cap = cap;  // the sequential command's (its base: T_o)
-    rr.tets_unchanged = true;
-    quality.emplace();
-    for (const par::RankFigures& f : figures) quality->merge(f.quality);
-    return rr;
+    return unchanged();
   }
   if (owners != nullptr) {
     owners->parts = w.size;

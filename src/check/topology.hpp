@@ -21,9 +21,9 @@
 #include <utility>
 #include <vector>
 
-
 #include "check/check.hpp"
 #include "mesh/huge_pages.hpp"
+
 namespace pdr::check {
 
 inline constexpr std::array<std::array<int, 3>, 4> kFaceVertices = {

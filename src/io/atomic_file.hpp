@@ -12,6 +12,7 @@
 // Errors are std::system_error naming the path.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -30,6 +31,9 @@ class AtomicFile {
 
   // Appends bytes to the temporary file.
   void write(std::string_view bytes);
+  // Writes bytes into the temporary file from `offset` on (other processes may write
+  // other ranges of it: par/rank_files.hpp).
+  void write_at(std::string_view bytes, std::uint64_t offset);
   // Closes the temporary file, reporting any deferred write error. Idempotent.
   void close();
   // close(), then renames the temporary onto the target.

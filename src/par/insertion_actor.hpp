@@ -51,6 +51,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "mesh/huge_pages.hpp"
 #include "par/cavity_search.hpp"
 #include "par/step_rules.hpp"
 #include "par/submesh.hpp"

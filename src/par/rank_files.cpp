@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <stdexcept>
-#include <system_error>
 #include <vector>
 
 #include "io/atomic_file.hpp"
@@ -29,8 +29,9 @@ int write_at(const std::string& path, const std::string& bytes, std::uint64_t of
   for (std::size_t done = 0; done < bytes.size() && err == 0;) {
     const ::ssize_t n = ::pwrite(fd, bytes.data() + done, bytes.size() - done,
                                  static_cast<::off_t>(offset + done));
-    if (n < 0 && errno != EINTR) err = errno;
-    if (n > 0) done += static_cast<std::size_t>(n);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) err = n < 0 ? errno : EIO;
+    else done += static_cast<std::size_t>(n);
   }
   if (::close(fd) != 0 && err == 0) err = errno;
   return err;
@@ -46,8 +47,8 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const std
     throw std::runtime_error("mpi: MPI_Comm_rank failed");
   // Rank 0's temporaries, removed unless committed.
   std::vector<std::unique_ptr<io::AtomicFile>> files;
-  std::exception_ptr created;  // rank 0's failure to create them
-  std::string names;
+  std::string names;  // rank 0: the temporaries' names
+  std::optional<std::system_error> not_created;
   if (rank == 0) {
     try {
       for (const std::string& p : paths) {
@@ -55,13 +56,13 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const std
         names += files.back()->temp_path();
         names.push_back('\0');
       }
-    } catch (const std::system_error&) {
-      created = std::current_exception();
+    } catch (const std::system_error& e) {
+      not_created = e;
       files.clear();
     }
   }
-  if (broadcast_from_root(created ? 1 : 0) != 0) {
-    if (rank == 0) std::rethrow_exception(created);
+  if (broadcast_from_root(not_created ? 1 : 0) != 0) {
+    if (rank == 0) throw RankFilesError(*not_created);
     return false;
   }
   names = broadcast_from_root(names);
@@ -77,12 +78,20 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const std
     at = end + 1;
     std::uint64_t offset = 0;
     for (int r = 0; r < rank; ++r) offset += all[static_cast<std::size_t>(r) * paths.size() + k];
-    err = write_at(temp, bytes[k], offset);
     failed_file = k;
+    if (rank != 0) {
+      err = write_at(temp, bytes[k], offset);
+      continue;
+    }
+    try {  // rank 0 through its own descriptor (the temporary may be read-only by mode)
+      files[k]->write_at(bytes[k], offset);
+    } catch (const std::system_error& e) {
+      err = e.code().value();
+    }
   }
-  // A rank that failed (every rank learns the last one, and an errno of the failures).
-  const std::array<int, 2> failed = max_over_ranks({err != 0 ? rank + 1 : 0, err});
-  if (failed[0] == 0) {
+  // The last rank that failed, then its errno (every rank learns both).
+  const int failed = max_over_ranks({err != 0 ? rank + 1 : 0, 0})[0];
+  if (failed == 0) {
     if (rank == 0) {
       std::vector<io::AtomicFile*> raw;
       for (auto& f : files) raw.push_back(f.get());
@@ -90,12 +99,13 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const std
     }
     return true;
   }
+  const int failed_errno = max_over_ranks({rank + 1 == failed ? err : 0, 0})[0];
   if (rank != 0) return false;
-  const int who = failed[0] - 1;
-  throw std::system_error(failed[1], std::generic_category(),
-                          who == 0 ? "cannot write '" + paths[failed_file] + "'"
-                                   : "rank " + std::to_string(who) +
-                                         " cannot write its part of the output files");
+  const int who = failed - 1;
+  throw RankFilesError(std::error_code(failed_errno, std::generic_category()),
+                       who == 0 ? "cannot write '" + paths[failed_file] + "'"
+                                : "rank " + std::to_string(who) +
+                                      " cannot write its part of the output files");
 }
 
 }  // namespace pdr::par

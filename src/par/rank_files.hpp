@@ -3,14 +3,17 @@
 // TetGen files, app/parallel.cpp). Nothing is gathered at rank 0.
 //
 // How: rank 0 creates each file's temporary beside it (io::AtomicFile) and tells the
-// others its name; every rank opens it (without creating it: on hosts that do not share
-// rank 0's file system the open fails, and the run says so instead of writing a file with
-// holes) and writes its bytes at its offset, the sum of the sizes of the ranks before it;
-// once every rank reports its writes done, rank 0 renames the temporaries onto the files,
-// all or none (io::commit_all). A failure anywhere leaves no file changed and no
-// temporary behind: rank 0 then throws std::system_error with the reason (which rank,
-// which error), so the run reports it once, as the sequential command reports a file it
-// cannot write, and the other ranks return false (rank 0 ends the run).
+// others its name; every other rank opens it (without creating it: on hosts that do not
+// share rank 0's file system the open fails, and the run says so instead of writing a
+// file with holes) and writes its bytes at its offset, the sum of the sizes of the ranks
+// before it, as rank 0 does through its own descriptor; once every rank reports its
+// writes done, rank 0 renames the temporaries onto the files (io::commit_all: all are
+// closed before any is renamed). When a rank cannot write its part, no file is renamed
+// and rank 0's temporaries are removed; rank 0 then throws RankFilesError with the
+// reason (which rank, which error), so the run reports it once and ends with exit 2, as
+// the sequential command does for a file it cannot write, and the other ranks return
+// false. (A run aborted meanwhile, by a rank that fails otherwise, may leave the
+// temporaries.)
 //
 // Collective: every rank calls it, with the same paths in the same order. The ranks wait
 // for each other asleep (par/mpi_collect.hpp).
@@ -18,8 +21,16 @@
 
 #include <span>
 #include <string>
+#include <system_error>
 
 namespace pdr::par {
+
+// The output could not be written (rank 0 only; the user's to mend, not an internal error).
+class RankFilesError : public std::system_error {
+ public:
+  using std::system_error::system_error;
+  explicit RankFilesError(const std::system_error& e) : std::system_error(e) {}
+};
 
 // Writes file k as the concatenation of every rank's bytes[k], in rank order. True when
 // written; false on the ranks other than 0 when not (above).

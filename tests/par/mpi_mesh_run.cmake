@@ -12,13 +12,23 @@
 #                         for it (parallel.per_rank[r].deferred.cap)
 #   [-DWANT_LISTED=ON|OFF] the ranks listed the mesh themselves (parallel.listed_by_ranks:
 #                         par/mesh_parts.hpp), or rank 0 assembled it
+#   [-DWANT_UNWRITABLE=ON] OUT is made a regular file and the run writes under OUT/mesh,
+#                         which cannot be created: no temporary may be left beside OUT
 #   [-DWANT_WRITTEN=ON|OFF] the ranks wrote their parts of OUT.node/.ele/.face themselves
 #                         (parallel.written_by_ranks: par/rank_files.hpp), or rank 0 did;
 #                         either way `pdr check OUT --domain DOMAIN --ratio 2` passes on
 #                         the files, which hold the summary's counts
 separate_arguments(args UNIX_COMMAND "${ARGS}")
+set(run_out ${OUT})
+if(WANT_UNWRITABLE)
+  get_filename_component(dir "${OUT}" DIRECTORY)
+  file(MAKE_DIRECTORY "${dir}")
+  file(REMOVE_RECURSE "${OUT}")
+  file(WRITE "${OUT}" "a file, not a directory\n")
+  set(run_out ${OUT}/mesh)
+endif()
 execute_process(
-  COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${PDR} mesh ${DOMAIN} -o ${OUT} ${args} --json
+  COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${PDR} mesh ${DOMAIN} -o ${run_out} ${args} --json
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
 list(FIND EXPECT "${rc}" found)
 if(found EQUAL -1)
@@ -80,6 +90,16 @@ if(DEFINED WANT_LISTED)
   string(JSON listed GET "${out}" parallel listed_by_ranks)
   if((WANT_LISTED AND NOT listed) OR (NOT WANT_LISTED AND listed))
     message(FATAL_ERROR "parallel.listed_by_ranks: ${listed}, expected ${WANT_LISTED}\n${out}")
+  endif()
+endif()
+if(WANT_UNWRITABLE)
+  get_filename_component(dir "${OUT}" DIRECTORY)
+  file(GLOB left "${dir}/*.tmp-*")
+  if(left)
+    message(FATAL_ERROR "temporaries left: ${left}")
+  endif()
+  if(err MATCHES "MPI_ABORT")
+    message(FATAL_ERROR "the run was aborted, not ended:\n${err}")
   endif()
 endif()
 if(DEFINED WANT_WRITTEN)
