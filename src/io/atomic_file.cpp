@@ -59,17 +59,23 @@ void AtomicFile::write(std::string_view bytes) {
   }
 }
 
+int write_all_at(int fd, std::string_view bytes, std::uint64_t offset) {
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ::ssize_t n = ::pwrite(fd, bytes.data() + done, bytes.size() - done,
+                                 static_cast<::off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return n < 0 ? errno : EIO;
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
 void AtomicFile::write_at(std::string_view bytes, std::uint64_t offset) {
   if (fd_ < 0)
     throw std::system_error(std::make_error_code(std::errc::bad_file_descriptor),
                             "write to closed file for '" + path_ + "'");
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ::ssize_t n = ::pwrite(fd_, bytes.data() + done, bytes.size() - done,
-                                 static_cast<::off_t>(offset + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw_errno(n < 0 ? errno : EIO, "cannot write '" + path_ + "'");
-    done += static_cast<std::size_t>(n);
-  }
+  if (const int err = write_all_at(fd_, bytes, offset); err != 0)
+    throw_errno(err, "cannot write '" + path_ + "'");
 }
 
 void AtomicFile::close() {

@@ -46,6 +46,10 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// Writes all of `bytes` to descriptor fd from `offset` on (pwrite, again after a partial
+// write or EINTR); 0, or the errno of the failure (EIO when nothing more can be written).
+int write_all_at(int fd, std::string_view bytes, std::uint64_t offset);
+
 // Closes every file, then renames every file; a failure before the renames leaves no target
 // changed (the destructors remove the temporaries).
 void commit_all(std::span<AtomicFile* const> files);

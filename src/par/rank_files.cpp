@@ -25,14 +25,7 @@ namespace {
 int write_at(const std::string& path, const std::string& bytes, std::uint64_t offset) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);  // never creates it
   if (fd < 0) return errno;
-  int err = 0;
-  for (std::size_t done = 0; done < bytes.size() && err == 0;) {
-    const ::ssize_t n = ::pwrite(fd, bytes.data() + done, bytes.size() - done,
-                                 static_cast<::off_t>(offset + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) err = n < 0 ? errno : EIO;
-    else done += static_cast<std::size_t>(n);
-  }
+  int err = io::write_all_at(fd, bytes, offset);
   if (::close(fd) != 0 && err == 0) err = errno;
   return err;
 }
