@@ -1,7 +1,6 @@
 // The two local steps of the distributed cavity search (par/cavity_search.hpp).
 #include "par/cavity_search.hpp"
 
-#include <unordered_set>
 
 #include "delaunay/conflict.hpp"
 
@@ -57,13 +56,15 @@ CavitySearch::FetchSet CavitySearch::fetch_set(const Submesh& s, const Point& p,
   const TetStore& st = s.store();
   FetchSet result;
   std::vector<TetId>& out = result.tets;
-  std::unordered_set<TetId> taken;
+  taken_.clear();
   const auto add = [&](TetId t) {
-    if (!st.is_proxy(t) && taken.insert(t).second) out.push_back(t);
+    if (st.is_proxy(t) || taken_.contains(t)) return;
+    taken_.insert(t);
+    out.push_back(t);
   };
   for (const Gid g : wanted) {
     TetId t = s.find_tet(g);
-    if (t == kNoTet || taken.count(t) != 0) continue;
+    if (t == kNoTet || taken_.contains(t)) continue;
     if (walk) {
       const Location loc = locate(st, s.points(), p, t, rng_);
       t = loc.kind == Location::Kind::Remote ? st.neighbour(loc.tet, 3) : loc.tet;

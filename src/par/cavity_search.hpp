@@ -26,6 +26,7 @@
 
 #include "delaunay/cavity.hpp"
 #include "delaunay/walk.hpp"
+#include "par/slot_set.hpp"
 #include "par/submesh.hpp"
 
 namespace pdr::par {
@@ -67,6 +68,7 @@ class CavitySearch {
   CavityBuilder builder_;
   Cavity part_;
   RootCavity root_;
+  SlotSet taken_;  // fetch_set()'s tets so far
 };
 
 }  // namespace pdr::par

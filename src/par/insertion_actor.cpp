@@ -86,6 +86,7 @@ bool InsertionActor::next_ready(Waiting& w, int& skips) {
     }
     if (e.slot < st.slots() && st.is_alive(e.slot) && sub_.tet_gid(e.slot) == e.gid) {
       w = Waiting{Point{}, e.gid};
+      w.slot = e.slot;
       return true;
     }
     ++stats_.gone;
@@ -158,7 +159,9 @@ bool InsertionActor::step() {
     worked_ = true;
     int skips = kDropsPerStep;
     for (Waiting w; next_ready(w, skips);) {
-      if (local_step(w)) break;
+      const Local r = local_step(w);
+      if (r == Local::Done) break;
+      if (r == Local::Skipped) continue;  // ready_ is shorter by one: the loop ends
       ++stats_.gone;
       if (--skips <= 0) break;
     }
@@ -168,35 +171,41 @@ bool InsertionActor::step() {
   return td_.step(idle());
 }
 
-bool InsertionActor::local_step(const Waiting& w) {
-  const TetId t = w.tet == kNoGid ? kNoTet : sub_.find_tet(w.tet);
-  if (w.tet != kNoGid && (t == kNoTet || sub_.deferred(t))) return false;
+InsertionActor::Local InsertionActor::local_step(const Waiting& w) {
+  // A step parked before (it needed other ranks: trying it again at every wait would
+  // rebuild its cavity for nothing) or a given point (no tet to start from): parked
+  // again, its tet not looked up (whether it has left is seen once the search ends).
+  if (w.parked || (w.tet == kNoGid && w.a == kNoGid)) {
+    parked_.push_back(w);
+    return Local::Skipped;
+  }
+  const TetId t = w.tet == kNoGid ? kNoTet : sub_.find_tet(w.tet, w.slot);
+  if (w.tet != kNoGid && (t == kNoTet || sub_.deferred(t))) return Local::Gone;
   // Where the step's search starts: the tet itself, or for a step on ∂Ω a tet near its
   // element.
   const TetId from = w.a != kNoGid ? sub_.find_tet(w.near) : t;
-  // A given point, the search's own tet, or a step parked before (it needed other ranks:
-  // trying it again at every wait would rebuild its cavity for nothing).
-  if (from == kNoTet || w.parked || locked_.count(from) != 0) {
+  // No tet to start from here, or the search's own tet.
+  if (from == kNoTet || locked_.contains(from)) {
     parked_.push_back(w);
-    return true;
+    return Local::Done;
   }
   const bool tet_step = w.a == kNoGid && w.tet != kNoGid && rules_ != nullptr;
   const Point p = w.a != kNoGid ? w.p : rules_->point(sub_, t);
   const RootCavity& rc = search_.root_cavity(sub_, p, from, tet_step, reject(p, tet_step));
   if (rc.kind == RootCavity::Kind::Rejected) {
     defer_early(w, early_reason_);
-    return true;
+    return Local::Done;
   }
-  const auto locked = [&](TetId u) { return locked_.count(u) != 0; };
+  const auto locked = [&](TetId u) { return locked_.contains(u); };
   if (rc.kind != RootCavity::Kind::Complete ||
       std::any_of(rc.cavity.conflict.begin(), rc.cavity.conflict.end(), locked) ||
       std::any_of(rc.cavity.ring.begin(), rc.cavity.ring.end(), locked)) {
     parked_.push_back(w);
     parked_.back().parked = rc.kind != RootCavity::Kind::Complete;  // it needs other ranks
-    return true;
+    return Local::Done;
   }
   if (complete(rc.cavity, w)) ++stats_.local_while_waiting;
-  return true;
+  return Local::Done;
 }
 
 bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
@@ -238,7 +247,7 @@ void InsertionActor::defer(const Waiting& w) {
     return;
   }
   ++stats_.deferred;
-  if (const TetId t = sub_.find_tet(w.tet); t != kNoTet) sub_.mark_deferred(t);
+  if (const TetId t = sub_.find_tet(w.tet, w.slot); t != kNoTet) sub_.mark_deferred(t);
 }
 
 CavitySearch::Reject InsertionActor::reject(const Point& p, bool tet_step) {
@@ -294,7 +303,7 @@ bool InsertionActor::start(Waiting w) {
     return true;
   }
   if (w.tet != kNoGid) {  // a tet's step: from the tet itself, while it is here
-    const TetId t = sub_.find_tet(w.tet);
+    const TetId t = sub_.find_tet(w.tet, w.slot);
     if (t == kNoTet || sub_.deferred(t)) return false;  // left, or deferred meanwhile
     w.p = rules_->point(sub_, t);
     active_ = true;
@@ -331,7 +340,7 @@ TetId InsertionActor::any_real_tet() {
 
 void InsertionActor::round() {
   ++stats_.rounds;
-  TetId hint = sub_.find_tet(s_.hint);
+  TetId hint = sub_.find_tet(s_.hint, s_.w.slot);
   if (hint == kNoTet) hint = any_real_tet();  // the hint was taken: start anywhere here
   if (hint == kNoTet) {                       // everything here was taken: start over
     setback();
@@ -360,7 +369,7 @@ void InsertionActor::round() {
   if (rc.kind == RootCavity::Kind::Complete) {
     // A tet's step inserts its circumcenter only while the tet exists (here, in the
     // cavity): once another commit or a migration took it, p is no step of Fig. 2.
-    const bool gone = s_.w.tet != kNoGid && sub_.find_tet(s_.w.tet) == kNoTet;
+    const bool gone = s_.w.tet != kNoGid && sub_.find_tet(s_.w.tet, s_.w.slot) == kNoTet;
     finish();
     if (gone)
       ++stats_.gone;
@@ -373,7 +382,7 @@ void InsertionActor::round() {
     return;
   }
   locked_.clear();
-  if (const TetId own = s_.w.tet == kNoGid ? kNoTet : sub_.find_tet(s_.w.tet); own != kNoTet)
+  if (const TetId own = s_.w.tet == kNoGid ? kNoTet : sub_.find_tet(s_.w.tet, s_.w.slot); own != kNoTet)
     locked_.insert(own);  // the step's own tet: no local step or FETCH may take it
   if (rc.walk) {
     locked_.insert(hint);
@@ -483,7 +492,7 @@ void InsertionActor::serve_fetch(WireReader& r) {
       return;
     }
     tets = std::move(f.tets);
-    refuse = std::any_of(tets.begin(), tets.end(), [&](TetId t) { return locked_.count(t) != 0; });
+    refuse = std::any_of(tets.begin(), tets.end(), [&](TetId t) { return locked_.contains(t); });
   }
   if (refuse) {
     ++stats_.refused;

@@ -48,11 +48,11 @@
 #include <cstdint>
 #include <deque>
 #include <random>
-#include <unordered_set>
 #include <vector>
 
 #include "mesh/huge_pages.hpp"
 #include "par/cavity_search.hpp"
+#include "par/slot_set.hpp"
 #include "par/step_rules.hpp"
 #include "par/submesh.hpp"
 #include "par/termination.hpp"
@@ -115,6 +115,7 @@ class InsertionActor {
   struct Waiting {
     Point p{};
     Gid tet = kNoGid;  // refinement: the tet whose step this is (p is its circumcenter)
+    TetId slot = kNoTet;  // where `tet` was when queued (Submesh::find_tet's hint)
     // Refinement, a step on ∂Ω (tet is kNoGid): the subsegment {a, b} whose midpoint p
     // is (c is kNoGid), or the subfacet {a, b, c} whose circumcenter it is, a tet near
     // it where its search starts, and the tet whose step asked for it (`origin`: queued
@@ -176,8 +177,11 @@ class InsertionActor {
   bool start(Waiting w);  // false: a tet that has left
   // Refinement, while the search waits for replies: the step of w's tet when its cavity
   // is complete here and touches no locked tet (latency hiding); otherwise w is parked
-  // until the search ends. False: w's tet has left (nothing done).
-  bool local_step(const Waiting& w);
+  // until the search ends. A step parked before (it needs other ranks) or a given point
+  // is parked again at once, without a look at its tet (Skipped); Gone: w's tet has left
+  // (nothing done).
+  enum class Local { Done, Skipped, Gone };
+  Local local_step(const Waiting& w);
   // A complete cavity at this rank for step w: the rules accept it (commit, queue the new
   // tets they want), defer it (mark w's tet; a step on ∂Ω is dropped), or ask for a step
   // on ∂Ω first (queued in w's place; w's tet is tried again once it ends).
@@ -198,7 +202,7 @@ class InsertionActor {
   bool active_ = false, again_ = false;  // again_: run the round on the next step
   bool worked_ = false;
   Search s_;
-  std::unordered_set<TetId> locked_;
+  SlotSet locked_;
   std::deque<Waiting> ready_;  // points, steps on ∂Ω, steps parked or set back
   HugePageVector<QueuedTet> tets_;  // want(), in order; the first tets_head_ taken
   std::size_t tets_head_ = 0;

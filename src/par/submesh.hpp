@@ -178,6 +178,13 @@ class Submesh {
   Gid tet_gid(TetId t) const { return slot_[t].gid; }
   // The real tet with global id g, or kNoTet when it is not here.
   TetId find_tet(Gid g) const;
+  // The same, tried first at slot `hint` (where g was seen before: a queued tet's slot),
+  // which saves the index's lookup while the tet has not moved.
+  TetId find_tet(Gid g, TetId hint) const {
+    if (hint < slot_.size() && slot_[hint].gid == g && g != kNoGid && store_.is_alive(hint))
+      return hint;
+    return find_tet(g);
+  }
   bool inside(TetId t) const { return t < slot_.size() && (slot_[t].inside & 1) != 0; }
   // Refinement: the step of real tet t was deferred (par/refinement_rules.hpp); the mark
   // travels with the tet, so no rank takes that step up again in the parallel phase.
