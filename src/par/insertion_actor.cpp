@@ -128,7 +128,7 @@ bool InsertionActor::step() {
   if (got == 0 && !idle() && !waiting()) stats_.poll_excess_s += polling;
   for (std::size_t i = 0; i < delayed_.size();)
     if (delayed_[i].wake <= tick_) {
-      ready_.push_back(delayed_[i]);
+      ready().push_back(delayed_[i]);
       delayed_[i] = delayed_.back();
       delayed_.pop_back();
     } else {
@@ -224,7 +224,7 @@ bool InsertionActor::complete(const Cavity& c, const Waiting& w) {
     if (active_)  // a local step while the search waits: it waits for the search's end
       parked_.push_back(first);
     else
-      ready_.push_front(first);
+      ready().push_front(first);
     return false;
   }
   if (v.kind == Verdict::Kind::Defer) {
@@ -412,7 +412,8 @@ void InsertionActor::finish() {
   active_ = false;
   again_ = false;
   locked_.clear();
-  ready_.insert(ready_.begin(), parked_.begin(), parked_.end());
+  ready(parked_.size());  // in their order, before the rest
+  for (auto it = parked_.rbegin(); it != parked_.rend(); ++it) ready_.push_front(*it);
   parked_.clear();
 }
 
@@ -461,7 +462,7 @@ void InsertionActor::receive(int, std::span<const std::byte> bytes) {
       const Point p = r.get<Point>();
       Waiting w{p};
       w.setbacks = r.get<std::uint32_t>();
-      ready_.push_back(w);
+      ready().push_back(w);
       break;
     }
   }
