@@ -71,10 +71,15 @@ void InsertionActor::want(TetId t) {
   if (*w) tets_.push_back({t, sub_.tet_gid(t)});
 }
 
-bool InsertionActor::next_ready(Waiting& w, int& skips) {
+bool InsertionActor::next_ready(Waiting& w, int& skips, bool remote) {
   if (!ready_.empty()) {
     w = ready_.front();
     ready_.pop_front();
+    return true;
+  }
+  if (remote && !remote_.empty()) {
+    w = remote_.front();
+    remote_.pop_front();
     return true;
   }
   const TetStore& st = sub_.store();
@@ -146,7 +151,7 @@ bool InsertionActor::step() {
   } else if (!active_ && has_ready()) {
     worked_ = true;
     int skips = kDropsPerStep;
-    for (Waiting w; next_ready(w, skips);) {
+    for (Waiting w; next_ready(w, skips, true);) {
       if (start(w)) break;
       ++stats_.gone;
       if (--skips <= 0) break;
@@ -155,10 +160,10 @@ bool InsertionActor::step() {
       charge_search(since(w0));
     else
       stats_.other_s += since(w0);  // tets gone, a point passed on
-  } else if (active_ && !again_ && has_ready()) {  // waiting for replies: local steps
+  } else if (active_ && !again_ && has_local()) {  // waiting for replies: local steps
     worked_ = true;
     int skips = kDropsPerStep;
-    for (Waiting w; next_ready(w, skips);) {
+    for (Waiting w; next_ready(w, skips, false);) {
       const Local r = local_step(w);
       if (r == Local::Done) break;
       if (r == Local::Skipped) continue;  // ready_ is shorter by one: the loop ends
@@ -172,10 +177,14 @@ bool InsertionActor::step() {
 }
 
 InsertionActor::Local InsertionActor::local_step(const Waiting& w) {
-  // A step parked before (it needed other ranks: trying it again at every wait would
-  // rebuild its cavity for nothing) or a given point (no tet to start from): parked
-  // again, its tet not looked up (whether it has left is seen once the search ends).
-  if (w.parked || (w.tet == kNoGid && w.a == kNoGid)) {
+  // A step that needed other ranks before (set back since: trying it again at a wait
+  // would rebuild its cavity for nothing) or a given point (no tet to start from): put
+  // aside, its tet not looked up (whether it has left is seen when it starts).
+  if (w.parked) {
+    room(remote_).push_back(w);
+    return Local::Skipped;
+  }
+  if (w.tet == kNoGid && w.a == kNoGid) {
     parked_.push_back(w);
     return Local::Skipped;
   }
@@ -200,8 +209,12 @@ InsertionActor::Local InsertionActor::local_step(const Waiting& w) {
   if (rc.kind != RootCavity::Kind::Complete ||
       std::any_of(rc.cavity.conflict.begin(), rc.cavity.conflict.end(), locked) ||
       std::any_of(rc.cavity.ring.begin(), rc.cavity.ring.end(), locked)) {
-    parked_.push_back(w);
-    parked_.back().parked = rc.kind != RootCavity::Kind::Complete;  // it needs other ranks
+    if (rc.kind != RootCavity::Kind::Complete) {  // it needs other ranks
+      room(remote_).push_back(w);
+      remote_.back().parked = true;
+    } else {  // a locked tet: tried again once the search ends
+      parked_.push_back(w);
+    }
     return Local::Done;
   }
   if (complete(rc.cavity, w)) ++stats_.local_while_waiting;

@@ -38,9 +38,9 @@
 // unlocked (the search's part of its closure and the tets that arrived for it are locked):
 // they commit at once, in the same single-threaded loop, so no two commits share a
 // closure tet still; the waiting search reruns its round from scratch when the replies
-// are in. A step that needs other ranks waits (parked) until the search ends. A queued
-// tet that
-// has left (migrated or deleted) is dropped when its turn comes. A tet whose step was
+// are in. A step whose cavity touches a locked tet waits (parked) until the search ends;
+// one that needs other ranks waits for a search of its own, and no later wait looks at it
+// again. A queued tet that has left (migrated or deleted) is dropped when its turn comes. A tet whose step was
 // deferred is marked (the mark moves with it) and not queued again: without the mark, two
 // ranks whose deferred steps share closure tets pass them back and forth for ever.
 #pragma once
@@ -105,7 +105,9 @@ class InsertionActor {
   // The submesh, given up once the phase has ended (the actor is then done with).
   Submesh release_submesh() { return std::move(sub_); }
   const InsertionStats& stats() const { return stats_; }
-  bool idle() const { return !active_ && !has_ready() && delayed_.empty() && parked_.empty(); }
+  bool idle() const {
+    return !active_ && !has_ready() && delayed_.empty() && parked_.empty();
+  }
   // The last step() handled a message or did work of its own; a search of this rank waits
   // for replies (the idle policy only yields then: par/idle.hpp).
   bool worked() const { return worked_; }
@@ -145,10 +147,13 @@ class InsertionActor {
     TetId slot = kNoTet;
     Gid gid = kNoGid;
   };
-  bool has_ready() const { return !ready_.empty() || tets_head_ < tets_.size(); }
-  // The next step to take: ready_'s first, else the first queued tet still here (those
-  // that left are skipped and counted as gone, at most `skips` of them). False: none.
-  bool next_ready(Waiting& w, int& skips);
+  // Steps to try while a search waits (local_step): not those known to need other ranks.
+  bool has_local() const { return !ready_.empty() || tets_head_ < tets_.size(); }
+  bool has_ready() const { return has_local() || !remote_.empty(); }
+  // The next step to take: ready_'s first, else (`remote`: no search waits) remote_'s
+  // first, else the first queued tet still here (those that left are skipped and counted
+  // as gone, at most `skips` of them). False: none.
+  bool next_ready(Waiting& w, int& skips, bool remote);
 
   void receive(int from, std::span<const std::byte> m);
   void serve_fetch(WireReader& r);
@@ -179,9 +184,10 @@ class InsertionActor {
   bool start(Waiting w);  // false: a tet that has left
   // Refinement, while the search waits for replies: the step of w's tet when its cavity
   // is complete here and touches no locked tet (latency hiding); otherwise w is parked
-  // until the search ends. A step parked before (it needs other ranks) or a given point
-  // is parked again at once, without a look at its tet (Skipped); Gone: w's tet has left
-  // (nothing done).
+  // until the search ends, or, when it needs other ranks, goes to remote_ (a search of
+  // its own, once none waits). A given point is parked at once (Skipped), and so is a
+  // step known to need other ranks (set back meanwhile), to remote_; Gone: w's tet has
+  // left (nothing done).
   enum class Local { Done, Skipped, Gone };
   Local local_step(const Waiting& w);
   // A complete cavity at this rank for step w: the rules accept it (commit, queue the new
@@ -205,16 +211,21 @@ class InsertionActor {
   bool worked_ = false;
   Search s_;
   SlotSet locked_;
-  // Points, steps on ∂Ω, steps parked or set back: a ring that grows (ready()), so that
-  // the parked steps going back and forth at every search cost no allocation (a deque's
-  // blocks did: about 2% of a rank's time in malloc and free).
-  boost::circular_buffer<Waiting> ready_;
-  // ready_ with room for n more.
-  boost::circular_buffer<Waiting>& ready(std::size_t n = 1) {
-    if (ready_.capacity() - ready_.size() < n)
-      ready_.set_capacity(std::max<std::size_t>({64, 2 * ready_.capacity(), ready_.size() + n}));
-    return ready_;
+  // Points, steps on ∂Ω, steps parked or set back: rings that grow (room()), so that the
+  // parked steps going back at every search cost no allocation (a deque's blocks did:
+  // about 2% of a rank's time in malloc and free).
+  using Ring = boost::circular_buffer<Waiting>;
+  Ring ready_;
+  // Steps found to need other ranks while a search waited (Waiting::parked): taken only
+  // when no search waits, so that no wait goes over them again.
+  Ring remote_;
+  // `r` with room for n more.
+  static Ring& room(Ring& r, std::size_t n = 1) {
+    if (r.capacity() - r.size() < n)
+      r.set_capacity(std::max<std::size_t>({64, 2 * r.capacity(), r.size() + n}));
+    return r;
   }
+  Ring& ready(std::size_t n = 1) { return room(ready_, n); }
   HugePageVector<QueuedTet> tets_;  // want(), in order; the first tets_head_ taken
   std::size_t tets_head_ = 0;
   std::vector<Waiting> delayed_;
