@@ -1,7 +1,6 @@
 // The two local steps of the distributed cavity search (par/cavity_search.hpp).
 #include "par/cavity_search.hpp"
 
-
 #include "delaunay/conflict.hpp"
 
 namespace pdr::par {

@@ -178,14 +178,11 @@ bool InsertionActor::step() {
 
 InsertionActor::Local InsertionActor::local_step(const Waiting& w) {
   // A step that needed other ranks before (set back since: trying it again at a wait
-  // would rebuild its cavity for nothing) or a given point (no tet to start from): put
-  // aside, its tet not looked up (whether it has left is seen when it starts).
-  if (w.parked) {
+  // would rebuild its cavity for nothing) or a given point (a search from any tet here):
+  // put aside for a search of its own, its tet not looked up (whether it has left is seen
+  // when it starts). Once there, no later wait goes over it.
+  if (w.parked || (w.tet == kNoGid && w.a == kNoGid)) {
     room(remote_).push_back(w);
-    return Local::Skipped;
-  }
-  if (w.tet == kNoGid && w.a == kNoGid) {
-    parked_.push_back(w);
     return Local::Skipped;
   }
   const TetId t = w.tet == kNoGid ? kNoTet : sub_.find_tet(w.tet, w.slot);

@@ -38,9 +38,9 @@
 // unlocked (the search's part of its closure and the tets that arrived for it are locked):
 // they commit at once, in the same single-threaded loop, so no two commits share a
 // closure tet still; the waiting search reruns its round from scratch when the replies
-// are in. A step whose cavity touches a locked tet waits (parked) until the search ends;
-// one that needs other ranks waits for a search of its own, and no later wait looks at it
-// again. A queued tet that has left (migrated or deleted) is dropped when its turn comes. A tet whose step was
+// are in. A step whose cavity touches a locked tet, or a step on ∂Ω with no tet here to
+// start from, waits (parked) until the search ends; a step that needs other ranks, or a
+// given point, waits for a search of its own, and no later wait looks at it again. A queued tet that has left (migrated or deleted) is dropped when its turn comes. A tet whose step was
 // deferred is marked (the mark moves with it) and not queued again: without the mark, two
 // ranks whose deferred steps share closure tets pass them back and forth for ever.
 #pragma once
@@ -147,7 +147,9 @@ class InsertionActor {
     TetId slot = kNoTet;
     Gid gid = kNoGid;
   };
-  // Steps to try while a search waits (local_step): not those known to need other ranks.
+  // Steps to look at while a search waits (local_step): ready_ (where a step set back
+  // after it needed other ranks may be, local_step moves it to remote_) and the queue;
+  // not remote_.
   bool has_local() const { return !ready_.empty() || tets_head_ < tets_.size(); }
   bool has_ready() const { return has_local() || !remote_.empty(); }
   // The next step to take: ready_'s first, else (`remote`: no search waits) remote_'s
@@ -185,9 +187,9 @@ class InsertionActor {
   // Refinement, while the search waits for replies: the step of w's tet when its cavity
   // is complete here and touches no locked tet (latency hiding); otherwise w is parked
   // until the search ends, or, when it needs other ranks, goes to remote_ (a search of
-  // its own, once none waits). A given point is parked at once (Skipped), and so is a
-  // step known to need other ranks (set back meanwhile), to remote_; Gone: w's tet has
-  // left (nothing done).
+  // its own, once none waits). A given point, and a step known to need other ranks (set
+  // back meanwhile), go to remote_ at once, unlooked at (Skipped); Gone: w's tet has left
+  // (nothing done).
   enum class Local { Done, Skipped, Gone };
   Local local_step(const Waiting& w);
   // A complete cavity at this rank for step w: the rules accept it (commit, queue the new
