@@ -1,5 +1,6 @@
 # One run of `mpirun -np NP pdr mesh DOMAIN ...` (cmake -P), with what it must end in:
 #   -DMPIEXEC=... -DPDR=... -DNP=n -DDOMAIN=path -DOUT=prefix -DARGS="..." -DEXPECT="0;3"
+#   [-DLAUNCH=program]    each rank runs `program PDR mesh ...` (tests/par/nice_rank0.sh)
 #   [-DWANT_CHECK=pass]   the summary's "check" must be "pass"
 #   [-DWANT_PARALLEL=ON]  the summary has a "parallel" object with NP ranks, and the
 #                         ranks committed points (the parallel phase did work)
@@ -33,7 +34,7 @@ if(WANT_UNWRITABLE)
   set(run_out ${OUT}/mesh)
 endif()
 execute_process(
-  COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${PDR} mesh ${DOMAIN} -o ${run_out} ${args} --json
+  COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${LAUNCH} ${PDR} mesh ${DOMAIN} -o ${run_out} ${args} --json
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
 list(FIND EXPECT "${rc}" found)
 if(found EQUAL -1)
