@@ -39,7 +39,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/huge_pages.hpp"
+#include "mesh/growing_array.hpp"
 
 namespace pdr {
 
@@ -180,7 +180,7 @@ class TetStore {
 
  private:
   static constexpr std::size_t kRecord = 8;  // 4 vertices + 4 neighbours per tet
-  HugePageVector<std::uint32_t> data_;
+  GrowingArray<std::uint32_t> data_;
   std::size_t max_slots_ = kMaxTetSlots;
   TetId free_head_ = kNoTet;
   std::size_t live_ = 0;

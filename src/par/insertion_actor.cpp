@@ -57,7 +57,7 @@ void InsertionActor::add_wanted_tets() {
   std::vector<TetId> slots(tets_.size());
   for (std::size_t i = 0; i < tets_.size(); ++i) slots[i] = tets_[i].slot;
   const std::vector<std::uint32_t> order = hilbert_tet_order(st, sub_.points(), slots);
-  HugePageVector<QueuedTet> sorted(tets_.size());
+  GrowingArray<QueuedTet> sorted(tets_.size());
   for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = tets_[order[i]];
   tets_ = std::move(sorted);
   tets_head_ = 0;

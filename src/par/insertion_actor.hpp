@@ -52,7 +52,7 @@
 
 #include <boost/circular_buffer.hpp>
 
-#include "mesh/huge_pages.hpp"
+#include "mesh/growing_array.hpp"
 #include "par/cavity_search.hpp"
 #include "par/slot_set.hpp"
 #include "par/step_rules.hpp"
@@ -228,7 +228,7 @@ class InsertionActor {
     return r;
   }
   Ring& ready(std::size_t n = 1) { return room(ready_, n); }
-  HugePageVector<QueuedTet> tets_;  // want(), in order; the first tets_head_ taken
+  GrowingArray<QueuedTet> tets_;  // want(), in order; the first tets_head_ taken
   std::size_t tets_head_ = 0;
   std::vector<Waiting> delayed_;
   std::vector<Waiting> parked_;  // local_step(): until the search ends

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "mesh/huge_pages.hpp"
+#include "mesh/growing_array.hpp"
 #include "mesh/tet_store.hpp"
 
 namespace pdr::par {
@@ -33,7 +33,7 @@ class SlotSet {
   }
 
  private:
-  HugePageVector<std::uint32_t> stamp_;  // 0: in no epoch
+  GrowingArray<std::uint32_t> stamp_;  // 0: in no epoch
   std::uint32_t epoch_ = 1;
 };
 

@@ -55,7 +55,7 @@
 #include "delaunay/cavity.hpp"
 #include "delaunay/insert.hpp"
 #include "geom/point.hpp"
-#include "mesh/huge_pages.hpp"
+#include "mesh/growing_array.hpp"
 #include "mesh/tet_store.hpp"
 #include "par/flat_hash_map.hpp"
 #include "par/partition.hpp"
@@ -270,8 +270,8 @@ class Submesh {
   Gid serial_ = 0, vertex_serial_ = 0;
   CavityCommitter committer_;
   TetStore store_;
-  HugePageVector<Point> points_;
-  HugePageVector<Gid> gids_;
+  GrowingArray<Point> points_;
+  GrowingArray<Gid> gids_;
   std::vector<std::uint8_t> tags_;
   // Local vertex ids by global id; with a dense index (extract()), M_o's in a vector and
   // those made in the phase in a vector per submesh that made them, by serial.
@@ -290,21 +290,21 @@ class Submesh {
     std::uint8_t inside = 0;
     std::uint8_t exposed = 0;
   };
-  HugePageVector<SlotInfo> slot_;
+  GrowingArray<SlotInfo> slot_;
   // Real tets by global id: those made here by slot_of_serial_[serial], with a dense
   // index M_o's by m0_slot_[gid], each checked against slot_'s gid (a slot freed or reused no
   // longer matches, so nothing is erased: the hot paths touch no hash map); the others in
   // tet_at_, which holds only the tets here.
-  HugePageVector<TetId> slot_of_serial_;
+  GrowingArray<TetId> slot_of_serial_;
   std::vector<TetId> m0_slot_;
   FlatHashMap<Gid, TetId, GidHash> tet_at_;
   bool made_here(Gid g) const { return g >> 40 == Gid{id_} + 1; }
   void index_tet(Gid g, TetId t);
   void unindex_tet(Gid g);
-  HugePageVector<Side> side_;   // per slot: meaningful for a live proxy
+  GrowingArray<Side> side_;   // per slot: meaningful for a live proxy
   std::size_t proxies_ = 0;  // live proxies
   // take(): per slot and per vertex, the take() that last marked it.
-  HugePageVector<std::uint32_t> taken_, seen_;
+  GrowingArray<std::uint32_t> taken_, seen_;
   std::uint32_t takes_ = 0;
   FlatHashMap<FaceKey, TetId, FaceKeyHash> proxy_at_;
   FlatHashMap<Gid, Claim, GidHash> moved_;   // tets given away: the latest hand-over;
