@@ -3,7 +3,7 @@
 // pages (mesh/huge_pages.hpp) as soon as it is allocated, before the caller touches it
 // (malloc may hand out heap memory that an earlier block already faulted in). Not in
 // sanitizer builds, whose own operator new checks new/delete pairs. The
-// kernel's own growing arrays are advised where they grow (HugePageVector); this reaches
+// kernel's own growing arrays are mappings of their own (mesh/growing_array.hpp); this reaches
 // every other large array of a run, the checker's, the readers' and the writers' among
 // them. Why: on a virtual machine where each page fault exits to the hypervisor, faulting
 // in 4 KiB pages costs several times the work done on them (measured: about 11 us a

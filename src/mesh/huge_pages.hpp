@@ -31,10 +31,11 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
 }
 
 // std::allocator, except that a block of at least one huge page is advised for huge pages
-// when it is allocated, before a growing vector copies into it. A growing array (the tet
-// store's records, a submesh's per-slot records) is then faulted in 2 MiB at a time rather
-// than 4 KiB: on a virtual machine where each page fault exits to the hypervisor, faulting
-// a large array in 4 KiB pages costs about as much as writing it many times over.
+// when it is allocated, before a vector copies into it. A large array (the checker's) is
+// then faulted in 2 MiB at a time rather than 4 KiB: on a virtual machine where each page
+// fault exits to the hypervisor, faulting a large array in 4 KiB pages costs about as much
+// as writing it many times over. Arrays that grow with the mesh are GrowingArrays
+// (mesh/growing_array.hpp), which also avoid the copies of growth.
 template <class T>
 struct HugePageAllocator : std::allocator<T> {
   template <class U>
