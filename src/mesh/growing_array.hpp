@@ -12,8 +12,8 @@
 //
 // Small buffers (below kMapBytes) come from malloc and grow by realloc. Elements are
 // always value-initialized when resize() adds them (T{}, not zero bytes), so the choice of
-// buffer is invisible to the caller. Where mremap is not available (not Linux) every
-// buffer comes from malloc.
+// buffer is invisible to the caller. Where mremap is not available (not Linux), and in
+// AddressSanitizer builds, every buffer comes from malloc.
 #pragma once
 
 #include <algorithm>
@@ -42,7 +42,17 @@ inline std::size_t round_to_huge(std::size_t bytes) {
   return (bytes + kHugePage - 1) & ~(kHugePage - 1);
 }
 
-#if defined(__linux__) && defined(MREMAP_MAYMOVE) && defined(MREMAP_FIXED)
+// AddressSanitizer sees no overflow of a mapping: its builds keep every buffer on malloc.
+#if defined(__SANITIZE_ADDRESS__)
+#define PDR_GROWING_ARRAY_MALLOC_ONLY 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PDR_GROWING_ARRAY_MALLOC_ONLY 1
+#endif
+#endif
+
+#if defined(__linux__) && defined(MREMAP_MAYMOVE) && defined(MREMAP_FIXED) && \
+    !defined(PDR_GROWING_ARRAY_MALLOC_ONLY)
 inline constexpr bool kCanMap = true;
 
 // A reservation of `bytes` (a multiple of 2 MiB) at a 2 MiB-aligned address, no access.
