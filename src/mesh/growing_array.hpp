@@ -26,6 +26,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "mesh/huge_pages.hpp"
+
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -75,9 +77,7 @@ inline void* map(std::size_t bytes) {
     ::munmap(p, bytes);
     throw std::bad_alloc();
   }
-#if defined(MADV_HUGEPAGE)
-  ::madvise(p, bytes, MADV_HUGEPAGE);
-#endif
+  advise_huge_pages(p, bytes);
   return p;
 }
 
@@ -131,13 +131,11 @@ class GrowingArray {
     return *this;
   }
   GrowingArray& operator=(GrowingArray&& o) noexcept {
-    if (this != &o) {
-      release();
-      data_ = std::exchange(o.data_, nullptr);
-      size_ = std::exchange(o.size_, 0);
-      capacity_ = std::exchange(o.capacity_, 0);
-      mapped_bytes_ = std::exchange(o.mapped_bytes_, 0);
-    }
+    GrowingArray taken(std::move(o));  // o is left empty, this one's buffer freed below
+    std::swap(data_, taken.data_);
+    std::swap(size_, taken.size_);
+    std::swap(capacity_, taken.capacity_);
+    std::swap(mapped_bytes_, taken.mapped_bytes_);
     return *this;
   }
   ~GrowingArray() { release(); }
