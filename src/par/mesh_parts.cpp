@@ -87,6 +87,9 @@ void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> f
   const TetStore& st = s.store();
   const auto pts = s.points();
   reserve_huge(out.tets, out.tets.size() + s.real_tets());
+  // Each vertex's number once (a tet's four would each decode its global id).
+  std::vector<std::uint32_t> number(pts.size());
+  for (VertexId v = 0; v < pts.size(); ++v) number[v] = num(s.gid(v));
   for (TetId t = 0; t < st.slots(); ++t) {
     if (constexpr TetId kAhead = 8; t + kAhead < st.slots())  // scattered points, meanwhile
       for (int k = 0; k < 4; ++k)
@@ -94,7 +97,7 @@ void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> f
     if (!st.is_alive(t) || st.is_proxy(t) || st.is_ghost(t) || !s.inside(t)) continue;
     const VertexId* v = st.vertices(t);
     q.add(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
-    const Tet n{num(s.gid(v[0])), num(s.gid(v[1])), num(s.gid(v[2])), num(s.gid(v[3]))};
+    const Tet n{number[v[0]], number[v[1]], number[v[2]], number[v[3]]};
     out.tets.push_back(n);
     for (int f = 0; f < 4; ++f) {
       const std::uint32_t facet = face_facet(s, t, f);

@@ -191,7 +191,6 @@ FaceKey Submesh::key_of(TetId t, int f) const {
 void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside) {
   if (slot_.size() < store_.slots()) {
     slot_.resize(store_.slots());
-    side_.resize(store_.slots());
     taken_.resize(store_.slots(), 0);
   }
   slot_[t] = SlotInfo{g, epoch, inside, 0};
@@ -244,13 +243,21 @@ TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
 
 void Submesh::drop_proxy(TetId proxy) {
   proxy_at_.erase(key_of(proxy, 3));
-  side_[proxy] = Side{};
+  side_.erase(proxy);
   --proxies_;
   store_.destroy(proxy);
 }
 
+const Side& Submesh::proxy_side(TetId t) const {
+  const Side* s = side_.find(t);
+  if (s == nullptr) throw std::logic_error("submesh: tet " + std::to_string(t) + " is no live proxy");
+  return *s;
+}
+
 void Submesh::claim(TetId proxy, const Claim& c) {
-  Claim& mine = side_[proxy].claim;
+  Side* side = side_.find(proxy);
+  if (side == nullptr) throw std::logic_error("submesh: a claim on a tet that is no live proxy");
+  Claim& mine = side->claim;
   if (c.epoch > mine.epoch) mine = c;
 }
 
@@ -328,7 +335,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
       if (taken_[u] == takes_) {
         across = Side{slot_[u].gid, Claim{kSameMigration, 0}};
       } else if (store_.is_proxy(u)) {
-        across = side_[u];
+        across = proxy_side(u);
         // Tell the submesh believed to hold the tet across. When that is this one (the tet
         // is on its way here), nothing is sent: its arrival finds this move in moved_.
         if (across.claim.holder != id_)
@@ -433,7 +440,7 @@ bool Submesh::relink(Relink& r) {
     // A proxy on that face, unless the moved tet is here too (then the face is inside),
     // and only one that still names the moved tet: after a commit, a new tet may have
     // the same face.
-    if (const TetId* at = proxy_at_.find(r.face); at != nullptr && side_[*at].tet == r.tet)
+    if (const TetId* at = proxy_at_.find(r.face); at != nullptr && proxy_side(*at).tet == r.tet)
       claim(*at, r.claim);
     return true;
   }
@@ -472,14 +479,17 @@ std::vector<std::string> Submesh::check() const {
     }
     ++proxies;
     const TetId* at = proxy_at_.find(key_of(t, 3));
-    if (at == nullptr || *at != t || side_[t].tet == kNoGid)
+    const Side* side = side_.find(t);
+    if (at == nullptr || *at != t || side == nullptr || side->tet == kNoGid)
       out.push_back("submesh.proxy-index: proxy " + std::to_string(t) + " of submesh " +
                     std::to_string(id_) + " is not indexed by its face");
   }
-  if (proxies != proxies_ || proxies != proxy_at_.size() || foreign != tet_at_.size())
+  if (proxies != proxies_ || proxies != proxy_at_.size() || proxies != side_.size() ||
+      foreign != tet_at_.size())
     out.push_back("submesh.index: " + std::to_string(proxies) + " proxies, " +
                   std::to_string(proxies_) + " counted, " +
                   std::to_string(proxy_at_.size()) + " indexed faces, " +
+                  std::to_string(side_.size()) + " sides, " +
                   std::to_string(tet_at_.size()) + " indexed tets");
   return out;
 }

@@ -82,6 +82,11 @@ struct FaceKeyHash {
 struct GidHash {  // a mix of all 64 bits (global ids count up in their low bits)
   std::size_t operator()(Gid g) const;
 };
+struct SlotHash {  // tet ids count up from 0: spread over the table's low bits
+  std::size_t operator()(TetId t) const {
+    return static_cast<std::size_t>((std::uint64_t{t} * 0x9E3779B97F4A7C15ull) >> 32);
+  }
+};
 
 // A vertex made in the parallel phase (Submesh::insert): its global id holds the submesh
 // that made it and its serial there. Empty for any other global id (M_o's, a tet's).
@@ -217,7 +222,7 @@ class Submesh {
   VertexId find_vertex(Gid g) const;
 
   // What a proxy knows of the tet across it (precondition: t is a live proxy).
-  const Side& proxy_side(TetId t) const { return side_.at(t); }
+  const Side& proxy_side(TetId t) const;
   std::size_t real_tets() const { return store_.live() - proxies_; }
   std::size_t proxies() const { return proxies_; }
   std::size_t waiting_relinks() const;
@@ -301,7 +306,9 @@ class Submesh {
   bool made_here(Gid g) const { return g >> 40 == Gid{id_} + 1; }
   void index_tet(Gid g, TetId t);
   void unindex_tet(Gid g);
-  GrowingArray<Side> side_;   // per slot: meaningful for a live proxy
+  // The live proxies' sides, by slot: a few per cent of the slots, so not an array
+  // along the store (16 bytes a slot, faulted in for nothing on most).
+  FlatHashMap<TetId, Side, SlotHash> side_;
   std::size_t proxies_ = 0;  // live proxies
   // take(): per slot and per vertex, the take() that last marked it.
   GrowingArray<std::uint32_t> taken_, seen_;
