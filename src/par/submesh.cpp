@@ -191,7 +191,6 @@ FaceKey Submesh::key_of(TetId t, int f) const {
 void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside) {
   if (slot_.size() < store_.slots()) {
     slot_.resize(store_.slots());
-    taken_.resize(store_.slots(), 0);
   }
   slot_[t] = SlotInfo{g, epoch, inside, 0};
   if (g != kNoGid) index_tet(g, t);
@@ -297,17 +296,13 @@ Submesh Submesh::extract(ActorId k, const TetStore& s, std::span<const Point> pt
 
 Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Relink>& relinks) {
   if (to == id_) throw std::logic_error("submesh: a migration to itself");
-  if (++takes_ == 0) {  // the stamps wrapped: start them afresh
-    std::fill(taken_.begin(), taken_.end(), 0);
-    std::fill(seen_.begin(), seen_.end(), 0);
-    takes_ = 1;
-  }
+  taken_.clear();
+  seen_.clear();
   for (const TetId t : tets) {
     if (t >= store_.slots() || !store_.is_alive(t) || store_.is_proxy(t))
       throw std::logic_error("submesh: take of a dead tet or a proxy");
-    taken_[t] = takes_;
+    taken_.insert(t);
   }
-  seen_.resize(points_.size(), 0);
   Migration m;
   m.from = id_;
   m.to = to;
@@ -323,8 +318,8 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
     for (int i = 0; i < 4; ++i) {
       const VertexId v = store_.vertex(t, i);
       r.v[static_cast<std::size_t>(i)] = gid(v);
-      if (v != kGhostVertex && seen_[v] != takes_) {
-        seen_[v] = takes_;
+      if (v != kGhostVertex && !seen_.contains(v)) {
+        seen_.insert(v);
         m.vertices.push_back({gid(v), points_[v], tags_[v]});
       }
     }
@@ -332,7 +327,7 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
     for (int f = 0; f < 4; ++f) {
       const TetId u = store_.neighbour(t, f);
       Side& across = r.across[static_cast<std::size_t>(f)];
-      if (taken_[u] == takes_) {
+      if (taken_.contains(u)) {
         across = Side{slot_[u].gid, Claim{kSameMigration, 0}};
       } else if (store_.is_proxy(u)) {
         across = proxy_side(u);

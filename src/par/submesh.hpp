@@ -59,6 +59,7 @@
 #include "mesh/tet_store.hpp"
 #include "par/flat_hash_map.hpp"
 #include "par/partition.hpp"
+#include "par/slot_set.hpp"
 
 namespace pdr::par {
 
@@ -310,9 +311,9 @@ class Submesh {
   // along the store (16 bytes a slot, faulted in for nothing on most).
   FlatHashMap<TetId, Side, SlotHash> side_;
   std::size_t proxies_ = 0;  // live proxies
-  // take(): per slot and per vertex, the take() that last marked it.
-  GrowingArray<std::uint32_t> taken_, seen_;
-  std::uint32_t takes_ = 0;
+  // take(): the tets it takes, and the vertices it has listed (ids too: SlotSet holds any
+  // 32-bit id).
+  SlotSet taken_, seen_;
   FlatHashMap<FaceKey, TetId, FaceKeyHash> proxy_at_;
   FlatHashMap<Gid, Claim, GidHash> moved_;   // tets given away: the latest hand-over;
                                            // deleted tets another submesh may name

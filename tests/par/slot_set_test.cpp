@@ -1,11 +1,12 @@
 // SlotSet (par/slot_set.hpp) against std::set: random insertions, look-ups and clears,
-// over slots that make it grow, and many epochs.
+// runs of neighbouring slots that make its table grow, and many epochs.
 #include "par/slot_set.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <set>
+#include <vector>
 
 namespace pdr::par {
 namespace {
@@ -14,26 +15,28 @@ RC_GTEST_PROP(SlotSet, BehavesAsASetClearedAtOnce, ()) {
   SlotSet s;
   std::set<TetId> ref;
   const int ops = *rc::gen::inRange(1, 600);
-  const TetId range = *rc::gen::element<TetId>(8, 300, 70000);
+  const TetId range = *rc::gen::element<TetId>(8, 300, 70000, 4000000000u);
   for (int i = 0; i < ops; ++i) {
     const TetId t = *rc::gen::inRange<TetId>(0, range);
-    switch (*rc::gen::inRange(0, 8)) {
-      case 0:
-        s.clear();
-        ref.clear();
-        break;
-      case 1:
-      case 2:
-      case 3:
-        s.insert(t);
-        ref.insert(t);
-        break;
-      default:
-        break;
+    const int op = *rc::gen::inRange(0, 40);
+    if (op == 0) {
+      s.clear();
+      ref.clear();
+    } else if (op < 16) {
+      s.insert(t);
+      ref.insert(t);
+    } else if (op == 16) {  // a run of neighbouring slots, as a cavity's: the table grows
+      const TetId n = *rc::gen::inRange<TetId>(1, 200);
+      std::vector<TetId> run;
+      for (TetId k = 0; k < n && t + k < range; ++k) run.push_back(t + k);
+      s.insert(run.begin(), run.end());
+      ref.insert(run.begin(), run.end());
     }
     RC_ASSERT(s.contains(t) == (ref.count(t) != 0));
+    RC_ASSERT(s.size() == ref.size());
   }
   for (TetId t = 0; t < range && t < 1000; ++t) RC_ASSERT(s.contains(t) == (ref.count(t) != 0));
+  for (const TetId t : ref) RC_ASSERT(s.contains(t));
 }
 
 TEST(SlotSet, ARangeAndSlotsBeyondItsSize) {
@@ -42,7 +45,7 @@ TEST(SlotSet, ARangeAndSlotsBeyondItsSize) {
   s.insert(std::begin(a), std::end(a));
   for (const TetId t : a) EXPECT_TRUE(s.contains(t));
   EXPECT_FALSE(s.contains(2));
-  EXPECT_FALSE(s.contains(4000001));  // past the stamps: in no epoch
+  EXPECT_FALSE(s.contains(4000001));
   EXPECT_FALSE(s.contains(kNoTet));
   s.clear();
   for (const TetId t : a) EXPECT_FALSE(s.contains(t));
