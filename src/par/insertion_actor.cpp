@@ -54,10 +54,8 @@ void InsertionActor::add_wanted_tets() {
   // Along a Hilbert curve (hilbert_tet_order): in M_o's slot order, which its own
   // refinement scattered over space, the phase took 1.2 times as long on 2 ranks and 1.3
   // times on one (docs/parallel.md).
-  std::vector<TetId> slots(tets_.size());
-  for (std::size_t i = 0; i < tets_.size(); ++i) slots[i] = tets_[i].slot;
-  const std::vector<std::uint32_t> order = hilbert_tet_order(st, sub_.points(), slots);
-  GrowingArray<QueuedTet> sorted(tets_.size());
+  const std::vector<std::uint32_t> order = hilbert_tet_order(st, sub_.points(), tets_);
+  GrowingArray<TetId> sorted(tets_.size());
   for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = tets_[order[i]];
   tets_ = std::move(sorted);
   tets_head_ = 0;
@@ -68,7 +66,7 @@ void InsertionActor::want(TetId t) {
     return;
   std::optional<bool> w = sub_.wanted(t);
   if (!w) sub_.set_wanted(t, *(w = rules_->wants(sub_, t)));
-  if (*w) tets_.push_back({t, sub_.tet_gid(t)});
+  if (*w) tets_.push_back(t);
 }
 
 bool InsertionActor::next_ready(Waiting& w, int& skips, bool remote) {
@@ -84,14 +82,15 @@ bool InsertionActor::next_ready(Waiting& w, int& skips, bool remote) {
   }
   const TetStore& st = sub_.store();
   while (tets_head_ < tets_.size() && skips > 0) {
-    const QueuedTet e = tets_[tets_head_++];
+    const TetId t = tets_[tets_head_++];
     if (tets_head_ > 4096 && tets_head_ * 2 > tets_.size()) {
       tets_.erase(tets_.begin(), tets_.begin() + static_cast<std::ptrdiff_t>(tets_head_));
       tets_head_ = 0;
     }
-    if (e.slot < st.slots() && st.is_alive(e.slot) && sub_.tet_gid(e.slot) == e.gid) {
-      w = Waiting{Point{}, e.gid};
-      w.slot = e.slot;
+    if (t < st.slots() && st.is_alive(t) && !st.is_proxy(t) && !st.is_ghost(t) &&
+        sub_.inside(t) && !sub_.deferred(t) && sub_.wanted(t) == std::optional<bool>(true)) {
+      w = Waiting{Point{}, sub_.tet_gid(t)};
+      w.slot = t;
       return true;
     }
     ++stats_.gone;
