@@ -206,7 +206,9 @@ void Submesh::index_tet(Gid g, TetId t) {
     return;
   }
   const std::size_t serial = static_cast<std::size_t>(g & ((Gid{1} << 40) - 1));
-  if (slot_of_serial_.size() <= serial) slot_of_serial_.resize(serial + serial / 2 + 64, kNoTet);
+  // Serials come in order, so the index grows one entry at a time (its capacity doubles;
+  // pages are touched only as serials reach them).
+  if (slot_of_serial_.size() <= serial) slot_of_serial_.resize(serial + 1, kNoTet);
   slot_of_serial_[serial] = t;
 }
 
