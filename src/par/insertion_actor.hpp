@@ -27,8 +27,8 @@
 // A rank whose store has no tet left passes its points on (POINT) to the next rank.
 //
 // Refinement (ParRefinement, paper Fig. 7), with StepRules (par/step_rules.hpp): a second
-// queue, taken after the first, holds tets (slot and global id, a compact FIFO: most
-// entries are of tets a later commit deleted, dropped by one look at their slot). A
+// queue, taken after the first, holds tets (by slot, a compact FIFO: most entries are of
+// tets a later commit deleted, dropped by one look at their slot). A
 // tet's step inserts rules.point() (its circumcenter), searched as above from the tet
 // itself; a complete cavity is committed only when
 // rules.accept() says so (else the step is deferred), and its new inside tets that the
@@ -68,8 +68,9 @@ struct InsertionStats {
   std::uint64_t fetches_served = 0, refused = 0, tets_sent = 0, points_passed = 0;
   std::uint64_t fetches_rejected = 0;  // of the fetches served, those answered with a
                                        // deferral (StepRules::defers_at, at a tet here)
-  std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queued
-                                         // tets that had left when their turn came
+  std::uint64_t deferred = 0, gone = 0;  // refinement: steps the rules refused; queue
+                                         // entries whose slot held no tet to step at
+                                         // their turn, and steps whose tet had left
   std::uint64_t deferred_early = 0;  // of the deferred, those the rules decided at a tet
                                      // of a partial cavity (StepRules::defers_at)
   std::uint64_t local_while_waiting = 0;  // steps committed while a search waited
@@ -123,8 +124,9 @@ class InsertionActor {
     // Refinement, a step on ∂Ω (tet is kNoGid): the subsegment {a, b} whose midpoint p
     // is (c is kNoGid), or the subfacet {a, b, c} whose circumcenter it is, a tet near
     // it where its search starts, and the tet whose step asked for it (`origin`: queued
-    // again, when it is here, once this step ends, so a setback of this step delays it
-    // too; it is queued afresh, its own setbacks counted from zero).
+    // again, when it is here, once this step ends; it is queued afresh, its own setbacks
+    // counted from zero. An older queue entry of its slot may step it meanwhile, which
+    // Fig. 2's any order allows).
     Gid a = kNoGid, b = kNoGid, c = kNoGid, near = kNoGid, origin = kNoGid;
     std::uint32_t setbacks = 0;
     std::uint64_t wake = 0;  // step at which it may start again
@@ -147,8 +149,9 @@ class InsertionActor {
   bool has_local() const { return !ready_.empty() || tets_head_ < tets_.size(); }
   bool has_ready() const { return has_local() || !remote_.empty(); }
   // The next step to take: ready_'s first, else (`remote`: no search waits) remote_'s
-  // first, else the first queued tet still here (those that left are skipped and counted
-  // as gone, at most `skips` of them). False: none.
+  // first, else the tet in the first queued slot that holds one to step (tets_ below;
+  // the other entries are skipped and counted as gone, at most `skips` of them). False:
+  // none.
   bool next_ready(Waiting& w, int& skips, bool remote);
 
   void receive(int from, std::span<const std::byte> m);

@@ -23,6 +23,14 @@
 
 namespace pdr::par {
 
+// Tet ids count up from 0: Fibonacci hashing spreads them over a table's low bits (the
+// high bits of their product). For SlotSet, and FlatHashMaps keyed by slot.
+struct SlotHash {
+  std::size_t operator()(TetId t) const {
+    return static_cast<std::size_t>((std::uint64_t{t} * 0x9E3779B97F4A7C15ull) >> 32);
+  }
+};
+
 class SlotSet {
  public:
   bool contains(TetId t) const {
@@ -49,16 +57,19 @@ class SlotSet {
     }
   }
   std::size_t size() const { return size_; }
+  // Tests only: clear() as if it had been called until the epoch was `epoch` (> 0), to
+  // reach the wrap without 2^32 calls.
+  void clear_to_epoch_for_tests(std::uint32_t epoch) {
+    size_ = 0;
+    epoch_ = epoch;
+  }
 
  private:
   struct Entry {
     TetId slot = 0;
     std::uint32_t epoch = 0;  // 0: in no epoch
   };
-  // Fibonacci hashing: slots count up from 0, their product's high bits spread them.
-  std::size_t home(TetId t) const {
-    return static_cast<std::size_t>((std::uint64_t{t} * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
-  }
+  std::size_t home(TetId t) const { return SlotHash{}(t) & mask_; }
   void put(TetId t) {
     for (std::size_t i = home(t);; i = (i + 1) & mask_) {
       Entry& e = table_[i];

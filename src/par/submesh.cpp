@@ -189,9 +189,7 @@ FaceKey Submesh::key_of(TetId t, int f) const {
 }
 
 void Submesh::record_tet(TetId t, Gid g, std::uint32_t epoch, std::uint8_t inside) {
-  if (slot_.size() < store_.slots()) {
-    slot_.resize(store_.slots());
-  }
+  if (slot_.size() < store_.slots()) slot_.resize(store_.slots());
   slot_[t] = SlotInfo{g, epoch, inside, 0};
   if (g != kNoGid) index_tet(g, t);
 }

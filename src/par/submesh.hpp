@@ -83,11 +83,6 @@ struct FaceKeyHash {
 struct GidHash {  // a mix of all 64 bits (global ids count up in their low bits)
   std::size_t operator()(Gid g) const;
 };
-struct SlotHash {  // tet ids count up from 0: spread over the table's low bits
-  std::size_t operator()(TetId t) const {
-    return static_cast<std::size_t>((std::uint64_t{t} * 0x9E3779B97F4A7C15ull) >> 32);
-  }
-};
 
 // A vertex made in the parallel phase (Submesh::insert): its global id holds the submesh
 // that made it and its serial there. Empty for any other global id (M_o's, a tet's).

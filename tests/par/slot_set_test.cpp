@@ -39,6 +39,29 @@ RC_GTEST_PROP(SlotSet, BehavesAsASetClearedAtOnce, ()) {
   for (const TetId t : ref) RC_ASSERT(s.contains(t));
 }
 
+// The epoch counter wraps after 2^32 - 1 clears: entries written in the first epochs
+// must not count as members of the same-numbered epochs after the wrap.
+TEST(SlotSet, ClearsAcrossTheEpochWrap) {
+  SlotSet s;
+  s.insert(3);  // epoch 1
+  s.clear();
+  s.insert(70);  // epoch 2
+  s.clear_to_epoch_for_tests(0xFFFFFFFFu);
+  s.insert(5);
+  EXPECT_TRUE(s.contains(5));
+  EXPECT_FALSE(s.contains(3));
+  EXPECT_FALSE(s.contains(70));
+  for (std::uint32_t epoch = 1; epoch <= 3; ++epoch) {
+    s.clear();  // the first wraps: epoch 1 again, then 2, 3
+    EXPECT_EQ(s.size(), 0u);
+    s.insert(9);  // a member, so look-ups probe the table
+    EXPECT_TRUE(s.contains(9));
+    for (const TetId t : {3u, 5u, 70u}) EXPECT_FALSE(s.contains(t)) << t << " in epoch " << epoch;
+    s.insert(3);
+    EXPECT_EQ(s.size(), 2u);
+  }
+}
+
 TEST(SlotSet, ARangeAndSlotsBeyondItsSize) {
   SlotSet s;
   const TetId a[] = {5, 1, 4000000, 7};

@@ -43,6 +43,24 @@ TEST(Submesh, RandomMigrationsKeepTheMesh) {
   }
 }
 
+// A proxy's side is asked of proxies only: a real tet's, or a slot's that no proxy
+// holds, is a logic error, not an empty side.
+TEST(Submesh, OnlyAProxyHasASide) {
+  World w = cut(2, 1);
+  const Submesh& s = w.subs[0];
+  const TetStore& st = s.store();
+  TetId proxy = kNoTet, real = kNoTet;
+  for (TetId t = 0; t < st.slots(); ++t) {
+    if (!st.is_alive(t)) continue;
+    (st.is_proxy(t) ? proxy : real) = t;
+  }
+  ASSERT_NE(proxy, kNoTet);
+  ASSERT_NE(real, kNoTet);
+  EXPECT_NE(s.proxy_side(proxy).tet, kNoGid);
+  EXPECT_THROW((void)s.proxy_side(real), std::logic_error);
+  EXPECT_THROW((void)s.proxy_side(static_cast<TetId>(st.slots())), std::logic_error);
+}
+
 // M4: the submeshes labelled with D's subsegments and subfacets (as the parallel phase
 // does), then random migrations. Each submesh starts with the labels of the vertices it
 // holds, so a tet that reaches a submesh that lacked its vertices is labelled only by what
