@@ -62,8 +62,7 @@ void InsertionActor::add_wanted_tets() {
 }
 
 void InsertionActor::want(TetId t) {
-  if (rules_ == nullptr || sub_.store().is_ghost(t) || !sub_.inside(t) || sub_.deferred(t))
-    return;
+  if (rules_ == nullptr || !may_step(t)) return;
   std::optional<bool> w = sub_.wanted(t);
   if (!w) sub_.set_wanted(t, *(w = rules_->wants(sub_, t)));
   if (*w) tets_.push_back(t);
@@ -87,8 +86,8 @@ bool InsertionActor::next_ready(Waiting& w, int& skips, bool remote) {
       tets_.erase(tets_.begin(), tets_.begin() + static_cast<std::ptrdiff_t>(tets_head_));
       tets_head_ = 0;
     }
-    if (t < st.slots() && st.is_alive(t) && !st.is_proxy(t) && !st.is_ghost(t) &&
-        sub_.inside(t) && !sub_.deferred(t) && sub_.wanted(t) == std::optional<bool>(true)) {
+    if (t < st.slots() && st.is_alive(t) && !st.is_proxy(t) && may_step(t) &&
+        sub_.wanted(t) == std::optional<bool>(true)) {
       w = Waiting{Point{}, sub_.tet_gid(t)};
       w.slot = t;
       return true;

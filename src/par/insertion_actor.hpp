@@ -153,6 +153,11 @@ class InsertionActor {
   // the other entries are skipped and counted as gone, at most `skips` of them). False:
   // none.
   bool next_ready(Waiting& w, int& skips, bool remote);
+  // A tet of this submesh whose step the rules may want: in Ω, not deferred, no ghost.
+  // want() queues only such tets, and a queue entry steps only such a tet.
+  bool may_step(TetId t) const {
+    return !sub_.store().is_ghost(t) && sub_.inside(t) && !sub_.deferred(t);
+  }
 
   void receive(int from, std::span<const std::byte> m);
   void serve_fetch(WireReader& r);
