@@ -44,9 +44,8 @@ py::dict check(const py::object& mesh_or_points, const py::object& tets,
   {
     py::gil_scoped_release unlocked;  // the arrays were copied into mesh and plc
     const check::MeshView view = check::view_of(mesh);
-    auto rebuilt = app::start_rebuild(mesh.points, app::kOrderCheckSeed, options.threads > 1);
     report = plc ? check::check_mesh(view, *plc, options) : check::check_mesh(view, options);
-    app::add_order_check(report, mesh, app::kOrderCheckSeed, std::move(rebuilt));
+    app::add_order_check(report, mesh, app::kOrderCheckSeed);
   }
   timer.lap("check");
 

@@ -98,12 +98,10 @@ int run_check(const CheckArgs& args) {
     } catch (const InputError&) {
     }
   const auto view = check::view_of(mesh);
-  // DT(V) for order.independence is rebuilt meanwhile on another thread.
-  auto rebuilt = start_rebuild(mesh.points, kOrderCheckSeed, threads > 1);
   check::Report report =
       domain ? check::check_mesh(view, *domain, opt) : check::check_mesh(view, opt);
   if (progress.enabled()) progress.phase("check: order independence");
-  add_order_check(report, mesh, kOrderCheckSeed, std::move(rebuilt));
+  add_order_check(report, mesh, kOrderCheckSeed);
   timer.lap("check");
   progress.finish();
 

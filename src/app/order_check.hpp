@@ -24,7 +24,6 @@
 
 #include <array>
 #include <cstdint>
-#include <future>
 #include <span>
 #include <vector>
 
@@ -62,10 +61,6 @@ struct RebuiltDt {
   bool holds(const std::array<std::uint32_t, 4>& sorted_quad) const;
 };
 RebuiltDt rebuild_dt(std::span<const Point> points, std::uint64_t seed);
-// The rebuild on another thread (`concurrent`), or on the caller's when the result is
-// asked for. `points` must outlive the future.
-std::future<RebuiltDt> start_rebuild(std::span<const Point> points, std::uint64_t seed,
-                                     bool concurrent);
 
 // Lists the first `max_listed` missing tets; classifies ties only with `find_ties` (on a
 // mesh not known to be Delaunay they would mean nothing, and there may be many). The
@@ -81,8 +76,19 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
 // fail, or skipped; `violations` counts every missing tet (ties too, when it warns), and
 // the findings list them when the vertex set cannot be rebuilt (indices out of range, duplicate
 // or non-finite vertices: validity.* says why).
-// `rebuilt` is start_rebuild(mesh.points, seed, ...), begun before the checker ran.
-void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed,
-                     std::future<RebuiltDt> rebuilt);
+// Where order_implied(report) holds, the check passes without a rebuild (counts: implied
+// 1); otherwise DT(V) is rebuilt here.
+void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed);
+
+// Whether the checker's own report proves order independence, so that nothing need be
+// rebuilt: the mesh has tets, validity.indices, .coordinates, .duplicate_vertices and
+// .orientation passed, and delaunay.empty_sphere passed with no vertex on any tet's
+// circumsphere. Then every tet's closed circumball holds no vertex but its own four, and
+// such a tet is a tet of DT(V) whatever the perturbation (a sphere through exactly four
+// vertices, empty, is the circumsphere of a Delaunay cell that is a tet; the perturbation
+// only breaks ties among five or more cospherical vertices): the inclusion the rebuild
+// would test. The rebuild remains where ties leave the perturbation a choice, or where
+// the mesh is not Delaunay (to list what differs).
+bool order_implied(const check::Report& report);
 
 }  // namespace pdr::app

@@ -37,6 +37,13 @@ struct Context {
   std::vector<Interval> circum_r2;
 };
 
+// orient3d(face key a<b<c, apex) from the holder's exact orientation: the sorted face and
+// the apex are an even permutation of the tet exactly when the face is listed oddly
+// (FaceRef::odd). Two holders of a face lie on its opposite sides when theirs differ.
+inline int apex_side(const Context& c, const FaceRef& r) {
+  return to_int(c.orientation[r.tet]) * (r.odd ? 1 : -1);
+}
+
 // A result with the id, its invariant text (table in check.cpp), status Skipped.
 CheckResult make_result(std::string_view id);
 // Sets Pass/Fail from the violation count (Fail if any).
@@ -65,8 +72,12 @@ enum class DegreeVerdict { Disjoint, Overlap, PremisesFail };
 DegreeVerdict overlap_by_degree(const Context& c, CheckResult& r);
 
 // delaunay_empty.cpp
-// delaunay.empty_sphere; fills c.circum_r2.
-CheckResult check_empty_circumspheres(Context& c);
+// delaunay.empty_sphere; fills c.circum_r2. By default the Delaunay lemma spares the vertex
+// query of tets far from the boundary when its premises hold; that verdict also assumes
+// validity.overlap, so the caller runs it again with `by_lemma` false if that fails.
+CheckResult check_empty_circumspheres(Context& c, bool by_lemma = true);
+// Whether a result of check_empty_circumspheres relied on validity.overlap.
+bool used_lemma(const CheckResult& empty_sphere);
 
 // quality.cpp — Theorem 1.
 CheckResult check_radius_edge_ratio(const Context& c);  // quality.ratio

@@ -1,19 +1,52 @@
 // delaunay.empty_sphere: no mesh vertex lies strictly inside the circumsphere of any tet
 // (paper §1.2: a Delaunay tetrahedralization; the Bowyer-Watson cavity is exactly the set
 // of tets whose open circumballs contain the new vertex). Vertices exactly on a
-// circumsphere are counted ("cospherical") and are not violations.
+// circumsphere are counted ("cospherical", pairs of a tet and a vertex) and are not
+// violations.
 //
-// Every tet is tested against *all* vertices, not only its neighbours' (local Delaunayhood
-// implies the global property only for a tetrahedralization of a convex set; a mesh of a
-// non-convex domain is Delaunay only if the domain's vertices outside the mesh respect it
-// too). Candidates come from the vertex grid's cells that can meet an enclosure of the
-// closed circumball (circumball.hpp, PointGrid::query_ball), inside its box; each candidate
-// not a vertex of the tet and not provably outside the enclosure (surely_outside, a few
-// flops) gets an exact insphere sign, multiplied by the tet's exact orientation so the
-// verdict does not depend on the recorded vertex order. Degenerate tets are skipped
-// (validity.orientation reports them). Counts: candidates (points in the box that the query
-// visited: a large ball's query skips rows of cells that miss it), signs_evaluated.
+// The vertex query. Candidates for a tet come from the vertex grid's cells that can meet
+// an enclosure of the closed circumball (circumball.hpp, PointGrid::query_ball), inside its
+// box; each candidate not a vertex of the tet and not provably outside the enclosure
+// (surely_outside, a few flops) gets an exact insphere sign, multiplied by the tet's exact
+// orientation so the verdict does not depend on the recorded vertex order. Degenerate tets
+// are skipped (validity.orientation reports them). Every vertex is a candidate, not only
+// the neighbours': a mesh of a non-convex domain is Delaunay only if the vertices across a
+// gap or a notch respect every sphere too.
+//
+// The Delaunay lemma spares most tets that query. Premises: (P1) every tet has a nonzero
+// orientation; (P2) every face is held by one tet (a boundary face) or by two on its
+// opposite sides; (P3) every vertex is a vertex of some tet; (P4) the tets' interiors are
+// disjoint (validity.overlap). Let every interior face be locally Delaunay: the apex of one
+// holder is not strictly inside the other's circumsphere (one exact insphere per face).
+// Claim: a tet t whose closed circumball B has an enclosing box that meets the box of no
+// boundary face has no vertex strictly inside B; and none on its sphere either unless one
+// of t's faces is a tie (its other holder's apex on t's sphere).
+// Proof. Let v be a vertex in the open ball B, not a vertex of t, and pow_s(x) = |x - c_s|^2
+// - r_s^2 the power of x for the sphere of tet s. Walk along a segment from a point p
+// inside t to v, with p chosen off the finitely many planes through v and a mesh edge
+// (so the segment meets no edge, and no vertex before v). The segment lies in the closed
+// ball (convex), so it touches no boundary face: it leaves a tet only through the interior
+// of an interior face f, into f's other holder t', which lies beyond f (P2). Across f, pow_t
+// - pow_t' is affine, zero on f's plane, and at the apex of t' equals pow_t(apex) >= 0 (f
+// locally Delaunay), so it is >= 0 on the far side, where v lies (the segment crosses f's
+// plane once); > 0 if the apex is strictly outside. A convex tet is crossed once by a
+// segment, so the walk ends, in a tet s whose closure holds v. If v were not a vertex of s
+// it would lie inside s or inside a face or an edge of s; a face or edge held around v by
+// tets only (no boundary face meets the ball) has a neighbourhood of v covered by them,
+// and v's own tets (P3) would overlap one (against P4). So pow_s(v) = 0, and along the
+// walk pow_t(v) >= ... >= pow_s(v) = 0: v is not strictly inside B. If the first face
+// crossed is not a tie, pow_t(v) > pow_t1(v) >= 0: v is not on the sphere either. []
+// So: one insphere per interior face; a face that is not locally Delaunay, or a premise
+// P1-P3 that fails, sends every tet to the query (the counts and findings are then the
+// query's, exactly); otherwise only the tets at a tie face or near the boundary (their
+// ball's box meets a boundary face's, looked up in the grid's top frame) are queried.
+// P4 is validity.overlap's, decided beside this check: check.cpp runs this check again
+// with every tet queried when that fails (used_lemma). Counts: local_faces (interior
+// faces tested), queried_tets, lemma (1 when the lemma was used), candidates (points in a
+// queried box), signs_evaluated.
 #include <algorithm>
+#include <atomic>
+#include <optional>
 
 #include "check/checks.hpp"
 #include "check/circumball.hpp"
@@ -21,8 +54,144 @@
 #include "check/signs.hpp"
 
 namespace pdr::check {
+namespace {
 
-CheckResult check_empty_circumspheres(Context& c) {
+// The interior faces' verdict: ok when P2 holds and every one is locally Delaunay; the
+// holders of faces whose apex is on the other holder's sphere.
+struct LocalFaces {
+  bool ok = true;
+  std::uint64_t tested = 0;
+  std::vector<std::uint32_t> tied;
+};
+
+LocalFaces local_faces(const Context& c) {
+  const Topology& topo = c.topology;
+  const auto& tets = c.mesh.tets;
+  const auto& pts = c.mesh.points;
+  const unsigned threads = std::max(1u, c.options.threads);
+  std::vector<LocalFaces> parts(threads);
+  std::atomic<bool> failed{false};
+  parallel_blocks(topo.faces.size(), threads, 1 << 14, [&](unsigned w, std::size_t b, std::size_t e) {
+    if (failed.load(std::memory_order_relaxed)) return;
+    LocalFaces& part = parts[w];
+    for (std::size_t f = b; f < e; ++f) {
+      const auto h = topo.holders(f);
+      if (h.size() == 1) continue;
+      if (h.size() != 2 || apex_side(c, h[0]) == apex_side(c, h[1])) {
+        failed.store(true, std::memory_order_relaxed);
+        return;
+      }
+      const Tet& k = tets[h[0].tet];
+      const Point& apex = pts[tets[h[1].tet][h[1].local]];
+      ++part.tested;
+      const Sign in =
+          signs::insphere(pts[k[0]], pts[k[1]], pts[k[2]], pts[k[3]], apex) * c.orientation[h[0].tet];
+      if (in == Sign::Positive) {
+        failed.store(true, std::memory_order_relaxed);
+        return;
+      }
+      if (in == Sign::Zero) {
+        part.tied.push_back(h[0].tet);
+        part.tied.push_back(h[1].tet);
+      }
+    }
+  });
+  LocalFaces all;
+  all.ok = !failed.load();
+  for (LocalFaces& p : parts) {
+    all.tested += p.tested;
+    all.tied.insert(all.tied.end(), p.tied.begin(), p.tied.end());
+  }
+  return all;
+}
+
+// P1 and P3.
+bool tets_and_vertices_qualify(const Context& c) {
+  for (Sign s : c.orientation)
+    if (s == Sign::Zero) return false;
+  std::vector<std::uint8_t> used(c.mesh.points.size(), 0);
+  for (const Tet& t : c.mesh.tets)
+    for (std::uint32_t v : t) used[v] = 1;
+  return std::find(used.begin(), used.end(), std::uint8_t{0}) == used.end();
+}
+
+// The boundary faces' boxes bucketed in the vertex grid's top frame, and per cell the
+// Chebyshev distance in cells to the nearest cell holding one (capped at kClear): a box
+// whose cell range lies within that distance of its low cell meets none, in one lookup.
+// (Cells are monotone in the coordinates, grid.hpp: two boxes that meet share the cell of
+// a common point, which lies in both cell ranges.)
+class BoundaryCells {
+ public:
+  static constexpr int kClear = 7;
+
+  explicit BoundaryCells(const Context& c) : frame_(c.grid.frame()) {
+    const auto& pts = c.mesh.points;
+    const auto& boundary = c.topology.boundary;
+    boxes_.reserve(boundary.size());
+    std::vector<std::uint32_t> ids(boundary.size());
+    for (std::size_t i = 0; i < boundary.size(); ++i) {
+      boxes_.push_back(box_of<3>(pts, c.topology.faces[boundary[i]]));
+      ids[i] = static_cast<std::uint32_t>(i);
+    }
+    cells_ = grid_detail::bucket(frame_, boxes_, ids);
+    // Per axis in turn, d(x) = min over |k| <= kClear of max(|k|, d(x + k along the axis)):
+    // the three passes give min(kClear, Chebyshev distance).
+    const auto& dims = frame_.dims();
+    clear_.resize(frame_.size());
+    for (std::size_t i = 0; i < clear_.size(); ++i)
+      clear_[i] = cells_.start[i + 1] > cells_.start[i] ? 0 : kClear;
+    std::vector<std::uint8_t> row;
+    for (int axis = 0; axis < 3; ++axis) {
+      const int n = dims[static_cast<std::size_t>(axis)];
+      const std::size_t stride = axis == 0 ? 1 : axis == 1 ? static_cast<std::size_t>(dims[0])
+                                                         : static_cast<std::size_t>(dims[0]) * dims[1];
+      row.resize(static_cast<std::size_t>(n));
+      for (std::size_t first = 0; first < clear_.size(); ++first) {
+        // `first` starts a line along the axis when its coordinate on the axis is 0.
+        if ((first / stride) % static_cast<std::size_t>(n) != 0) continue;
+        for (int x = 0; x < n; ++x) row[static_cast<std::size_t>(x)] = clear_[first + x * stride];
+        for (int x = 0; x < n; ++x) {
+          int d = row[static_cast<std::size_t>(x)];
+          for (int k = 1; k < d && k <= kClear; ++k) {
+            if (x - k >= 0) d = std::min(d, std::max<int>(k, row[static_cast<std::size_t>(x - k)]));
+            if (x + k < n) d = std::min(d, std::max<int>(k, row[static_cast<std::size_t>(x + k)]));
+          }
+          clear_[first + x * stride] = static_cast<std::uint8_t>(d);
+        }
+      }
+    }
+  }
+
+  // Whether `box` meets the box of some boundary face.
+  bool meets(const Box& box) const {
+    const auto a = frame_.cell_of(box.lo), z = frame_.cell_of(box.hi);
+    const int span = std::max({z[0] - a[0], z[1] - a[1], z[2] - a[2]});
+    if (clear_[frame_.index(a)] > span) return false;
+    for (int k = a[2]; k <= z[2]; ++k)
+      for (int j = a[1]; j <= z[1]; ++j)
+        for (int i = a[0]; i <= z[0]; ++i) {
+          const std::size_t cell = frame_.index(i, j, k);
+          for (std::size_t s = cells_.start[cell]; s < cells_.start[cell + 1]; ++s)
+            if (boxes_meet(box, boxes_[cells_.ids[s]])) return true;
+        }
+    return false;
+  }
+
+ private:
+  const GridFrame& frame_;
+  std::vector<Box> boxes_;
+  grid_detail::Buckets cells_;
+  std::vector<std::uint8_t> clear_;
+};
+
+}  // namespace
+
+bool used_lemma(const CheckResult& r) {
+  const auto it = r.counts.find("lemma");
+  return it != r.counts.end() && it->second != 0;
+}
+
+CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
   CheckResult r = make_result("delaunay.empty_sphere");
   const auto& tets = c.mesh.tets;
   const auto& pts = c.mesh.points;
@@ -31,10 +200,21 @@ CheckResult check_empty_circumspheres(Context& c) {
   constexpr double kSmallBall = 16;  // radius 4 top cells
   const double side2 = c.grid.frame().side() * c.grid.frame().side();
   c.circum_r2.assign(tets.size(), Interval{});
+  LocalFaces local;
+  local.ok = by_lemma && tets_and_vertices_qualify(c);
+  if (local.ok) local = local_faces(c);
+  const bool lemma = local.ok;
+  std::vector<std::uint8_t> tied;
+  std::optional<BoundaryCells> near;
+  if (lemma) {
+    tied.assign(tets.size(), 0);
+    for (std::uint32_t t : local.tied) tied[t] = 1;
+    near.emplace(c);
+  }
   parallel_blocks(tets.size(), o.threads, 1024, [&](unsigned w, std::size_t b, std::size_t e) {
     Collector& col = parts[w];
     const std::uint64_t before = signs::exact_evaluations();
-    std::uint64_t cospherical = 0, pairs = 0, candidates = 0, tested = 0, skipped = 0;
+    std::uint64_t cospherical = 0, pairs = 0, candidates = 0, tested = 0, skipped = 0, queried = 0;
     for (std::size_t t = b; t < e; ++t) {
       const Sign s = c.orientation[t];
       if (s == Sign::Zero) {
@@ -47,6 +227,8 @@ CheckResult check_empty_circumspheres(Context& c) {
       const BallEnclosure ball = circumball(pa, pb, pc, pd);
       c.circum_r2[t] = ball.r2;
       const Box box = enclosing_box(ball);
+      if (lemma && !tied[t] && !near->meets(box)) continue;  // the lemma answers for it
+      ++queried;
       std::int64_t first = -1;
       std::uint64_t inside = 0;
       const auto visit = [&](std::uint32_t v, const Point& p) {
@@ -90,9 +272,12 @@ CheckResult check_empty_circumspheres(Context& c) {
     col.counts["candidates"] += candidates;
     col.counts["signs_evaluated"] += tested;
     col.counts["degenerate_skipped"] += skipped;
+    col.counts["queried_tets"] += queried;
     col.counts["exact_evaluations"] += signs::exact_evaluations() - before;
   });
   merge_into(parts, r, o.max_reported);
+  r.counts["local_faces"] = local.tested;
+  r.counts["lemma"] = lemma ? 1 : 0;
   conclude(r);
   return r;
 }

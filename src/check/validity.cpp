@@ -27,13 +27,6 @@
 namespace pdr::check {
 namespace {
 
-// orient3d(face key a<b<c, apex) from the holder's exact orientation: the sorted face and
-// the apex are an even permutation of the tet exactly when the face is listed oddly
-// (FaceRef::odd).
-int apex_side(const Context& c, const FaceRef& r) {
-  return to_int(c.orientation[r.tet]) * (r.odd ? 1 : -1);
-}
-
 bool same_cycle(const Tri& a, const Tri& b) {
   for (int s = 0; s < 3; ++s)
     if (a[0] == b[s] && a[1] == b[(s + 1) % 3] && a[2] == b[(s + 2) % 3]) return true;

@@ -98,7 +98,7 @@ TEST(OrderCheck, TheMissesListedDoNotDependOnThreads) {
 
 check::CheckResult as_check(const MeshData& m) {
   check::Report report = check::check_mesh(check::view_of(m), check::Options{});
-  add_order_check(report, m, kOrderCheckSeed, start_rebuild(m.points, kOrderCheckSeed, true));
+  add_order_check(report, m, kOrderCheckSeed);
   EXPECT_EQ(report.checks.back().id, "order.independence");
   EXPECT_EQ(report.seconds.count("order"), 1u);
   return report.checks.back();
@@ -127,6 +127,19 @@ std::vector<MeshData> cube_triangulations() {
     out.push_back(std::move(m));
   }
   return out;
+}
+
+// Where the checker's report implies the order check (delaunay.empty_sphere passed, no
+// vertex on a sphere), the rebuild agrees; where vertices are cospherical it is not implied.
+TEST(OrderCheck, ImpliedOnlyWithoutTiesAndThenTheRebuildAgrees) {
+  const MeshData m = jittered_grid_dt(6);
+  const check::Report report = check::check_mesh(check::view_of(m), check::Options{});
+  ASSERT_TRUE(report.ok()) << check::to_text(report);
+  EXPECT_TRUE(order_implied(report));
+  EXPECT_TRUE(check_order_independence(m, kOrderCheckSeed).ok());
+  for (const MeshData& c : cube_triangulations())
+    EXPECT_FALSE(order_implied(check::check_mesh(check::view_of(c), check::Options{})));
+  EXPECT_FALSE(order_implied(check::check_mesh(check::view_of(bipyramid(false)), check::Options{})));
 }
 
 TEST(OrderCheck, CosphericalTiesBrokenAnotherWayWarnOnly) {
@@ -165,7 +178,10 @@ TEST(OrderCheck, NonDelaunayFailsAndAnUnrebuildableSetIsSkipped) {
   EXPECT_EQ(flipped.status, check::Status::Fail);
   EXPECT_EQ(flipped.violations, 3u);
   EXPECT_EQ(flipped.counts.at("cospherical_ties"), 0u);
-  EXPECT_EQ(as_check(bipyramid(true)).status, check::Status::Pass);
+  const check::CheckResult delaunay = as_check(bipyramid(true));
+  EXPECT_EQ(delaunay.status, check::Status::Pass);
+  EXPECT_EQ(delaunay.counts.at("implied"), 1u);  // no vertex on a sphere: nothing rebuilt
+  EXPECT_EQ(flipped.counts.count("implied"), 0u);
 
   // A vertex strictly inside every sphere of the cube's tets (its centre, in no tet):
   // every tet also has a corner exactly on its sphere, but no difference is a tie here.

@@ -5,9 +5,13 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "check_test_util.hpp"
+#include "delaunay/bulk.hpp"
+#include "delaunay/delaunay.hpp"
+#include "delaunay/export.hpp"
 #include "mesh_gen.hpp"
 
 namespace pdr::check::test {
@@ -119,6 +123,100 @@ TEST(Delaunay, AgreesWithBruteForceOracleOnAJitteredGrid) {
   EXPECT_GT(v.violating_tets.size(), 0u);
   EXPECT_EQ(result(r, "delaunay.empty_sphere").violations, v.violating_tets.size());
   EXPECT_EQ(count(r, "delaunay.empty_sphere", "cospherical"), v.cospherical);
+}
+
+// The Delaunay lemma (delaunay_empty.cpp) spares the vertex query of tets far from the
+// boundary. Two Delaunay tetrahedralizations side by side, DT(A) and DT(B) (the kernel's),
+// make a mesh whose every interior face is locally Delaunay while the flat tets on A's hull
+// have spheres reaching deep into B: only the tets whose balls come near the boundary are
+// queried, and that must find every violation. Apart (a gap between the hulls) the lemma
+// decides; overlapping, validity.overlap fails and every tet is queried again. Either way
+// the verdict is the brute-force oracle's.
+// (nullopt where a cloud does not span space.)
+std::optional<MeshData> two_triangulations(const std::vector<int>& a, const std::vector<int>& b,
+                                           double shift) {
+  const auto dt_of = [](const std::vector<int>& c, double dx) {
+    std::set<std::array<int, 3>> distinct;  // a repeat would leave a vertex in no tet
+    for (std::size_t i = 0; i + 2 < c.size(); i += 3) distinct.insert({c[i], c[i + 1], c[i + 2]});
+    std::vector<Point> pts;
+    for (const auto& [x, y, z] : distinct) pts.push_back({x / 64.0 + dx, y / 64.0, z / 64.0 + 1e-3 * (x % 7)});
+    Delaunay dt(pts);
+    BulkOptions o;
+    o.renumber = false;
+    if (bulk_insert(dt, o).status != BulkStatus::Ok) return MeshData{};
+    return to_mesh_data(dt);
+  };
+  MeshData m = dt_of(a, 0);
+  const MeshData other = dt_of(b, shift);
+  if (m.tets.empty() || other.tets.empty()) return std::nullopt;
+  const auto base = static_cast<std::uint32_t>(m.points.size());
+  m.points.insert(m.points.end(), other.points.begin(), other.points.end());
+  for (Tet t : other.tets) {
+    for (std::uint32_t& v : t) v += base;
+    m.tets.push_back(t);
+  }
+  return m;
+}
+
+void expect_lemma_agrees(double shift, bool apart) {
+  // Points in [0, 1)^3 each; overlapping, the same cloud twice.
+  const auto cloud = [] { return *rc::gen::container<std::vector<int>>(3 * 14, rc::gen::inRange(0, 64)); };
+  const std::vector<int> a = cloud();
+  const std::optional<MeshData> both = two_triangulations(a, apart ? cloud() : a, shift);
+  RC_PRE(both.has_value());
+  const MeshData& m = *both;
+  Options o;
+  o.max_reported = 1000;
+  const Report r = run(m, o);
+  RC_ASSERT(result(r, "validity.overlap").status == (apart ? Status::Pass : Status::Fail));
+  const OracleVerdict v = delaunay_oracle(m);
+  const CheckResult& d = result(r, "delaunay.empty_sphere");
+  RC_TAG(v.violating_tets.empty() ? "delaunay" : "not delaunay");
+  RC_ASSERT(count(r, "delaunay.empty_sphere", "lemma") == (apart ? 1u : 0u));
+  RC_ASSERT(d.violations == v.violating_tets.size());
+  RC_ASSERT(count(r, "delaunay.empty_sphere", "violating_pairs") == v.violating_pairs);
+  RC_ASSERT(count(r, "delaunay.empty_sphere", "cospherical") == v.cospherical);
+  std::set<std::uint64_t> ids;
+  for (const Finding& f : d.findings) ids.insert(f.id);
+  RC_ASSERT(ids == v.violating_tets);
+}
+
+RC_GTEST_PROP(Delaunay, LemmaAgreesWithOracleAcrossAGap, ()) {
+  expect_lemma_agrees(*rc::gen::element(1.01, 1.1, 1.5), true);
+}
+
+RC_GTEST_PROP(Delaunay, OverlapSendsEveryTetToTheQuery, ()) {
+  expect_lemma_agrees(*rc::gen::element(1.0 / 512, 1.0 / 4096), false);
+}
+
+TEST(Delaunay, LemmaQueriesOnlyTetsNearTheBoundaryOrAtATie) {
+  // A Kuhn grid: every face of a cube's six tets is a tie, and the faces between cubes
+  // are not (the neighbour cube's far corner is outside the sphere). The lemma decides;
+  // the queried tets are those at a tie or near the boundary: all of them here, and the
+  // cospherical pairs are the oracle's.
+  const MeshData m = kuhn_grid(3);
+  const Report r = run(m);
+  EXPECT_TRUE(r.ok()) << to_text(r);
+  EXPECT_EQ(count(r, "delaunay.empty_sphere", "lemma"), 1u);
+  EXPECT_EQ(count(r, "delaunay.empty_sphere", "cospherical"), delaunay_oracle(m).cospherical);
+  // A jittered grid in general position, 12^3 points: the tets far from the boundary
+  // (about 40% here, more in a larger mesh) are not queried.
+  std::vector<Point> pts;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j)
+      for (int k = 0; k < 12; ++k)
+        pts.push_back({i + 0.01 * ((i * 7 + j * 3 + k) % 5), j + 0.013 * ((i + j * 5) % 7),
+                       k + 0.007 * ((j + k * 3) % 11)});
+  Delaunay dt(pts);
+  ASSERT_EQ(bulk_insert(dt, BulkOptions{}).status, BulkStatus::Ok);
+  const MeshData g = to_mesh_data(dt);
+  const Report rg = run(g);
+  EXPECT_TRUE(rg.ok()) << to_text(rg);
+  EXPECT_EQ(count(rg, "delaunay.empty_sphere", "lemma"), 1u);
+  EXPECT_GT(count(rg, "delaunay.empty_sphere", "queried_tets"), 0u);
+  EXPECT_LT(count(rg, "delaunay.empty_sphere", "queried_tets"), g.tets.size() * 3 / 4)
+      << g.tets.size() << " tets";
+  EXPECT_EQ(count(rg, "delaunay.empty_sphere", "cospherical"), 0u);
 }
 
 }  // namespace
