@@ -23,25 +23,32 @@
 // of t's faces is a tie (its other holder's apex on t's sphere).
 // Proof. Let v be a vertex in the open ball B, not a vertex of t, and pow_s(x) = |x - c_s|^2
 // - r_s^2 the power of x for the sphere of tet s. Walk along a segment from a point p
-// inside t to v, with p chosen off the finitely many planes through v and a mesh edge
-// (so the segment meets no edge, and no vertex before v). The segment lies in the closed
-// ball (convex), so it touches no boundary face: it leaves a tet only through the interior
-// of an interior face f, into f's other holder t', which lies beyond f (P2). Across f, pow_t
-// - pow_t' is affine, zero on f's plane, and at the apex of t' equals pow_t(apex) >= 0 (f
-// locally Delaunay), so it is >= 0 on the far side, where v lies (the segment crosses f's
-// plane once); > 0 if the apex is strictly outside. A convex tet is crossed once by a
-// segment, so the walk ends, in a tet s whose closure holds v. If v were not a vertex of s
-// it would lie inside s or inside a face or an edge of s; a face or edge held around v by
-// tets only (no boundary face meets the ball) has a neighbourhood of v covered by them,
-// and v's own tets (P3) would overlap one (against P4). So pow_s(v) = 0, and along the
-// walk pow_t(v) >= ... >= pow_s(v) = 0: v is not strictly inside B. If the first face
-// crossed is not a tie, pow_t(v) > pow_t1(v) >= 0: v is not on the sphere either. []
+// inside t to v, p chosen so that the segment meets no mesh edge and no mesh vertex before
+// v (the p to avoid lie on finitely many planes, each through v and an edge not collinear
+// with v; a line through v and an edge meets the segment only at v). The segment lies in
+// the closed ball (convex), so it touches no boundary face: it leaves a tet only through
+// the interior of an interior face f, into f's other holder t', which lies beyond f (P2).
+// Across f, pow_t - pow_t' is affine, zero on f's plane, and at the apex of t' equals
+// pow_t(apex) >= 0 (f locally Delaunay), so it is >= 0 on the far side, where v lies (the
+// segment crosses f's plane once); > 0 if the apex is strictly outside. A convex tet is
+// crossed once by a segment, so the walk ends, in a tet s whose closure holds v. Say v is
+// not a vertex of s. If v lies inside s, or inside a face of s (an interior one: no
+// boundary face meets the ball), tets cover a neighbourhood of v. If v lies inside an edge
+// e of s, every face at e is interior, so the tets around e go round it in cycles whose
+// dihedral angles add up to a multiple of 2 pi and cover a neighbourhood of v too. If v
+// lies at a vertex of s (a duplicate point), that vertex's star has no boundary face and
+// covers its neighbourhood. Either way v's own tets (P3) would overlap one of them
+// (against P4). So v is a vertex of s, pow_s(v) = 0, and along the walk pow_t(v) >= ... >=
+// pow_s(v) = 0: v is not strictly inside B. If the first face crossed is not a tie,
+// pow_t(v) > pow_t1(v) >= 0: v is not on the sphere either. []
 // So: one insphere per interior face; a face that is not locally Delaunay, or a premise
 // P1-P3 that fails, sends every tet to the query (the counts and findings are then the
 // query's, exactly); otherwise only the tets at a tie face or near the boundary (their
 // ball's box meets a boundary face's, looked up in the grid's top frame) are queried.
-// P4 is validity.overlap's, decided beside this check: check.cpp runs this check again
-// with every tet queried when that fails (used_lemma). Counts: local_faces (interior
+// The boundary faces' boxes are looked up in a BoxCells over the vertex grid's top frame
+// (grid.hpp). P4 is validity.overlap's, decided beside this check: check.cpp runs this
+// check again with every tet queried when that fails (used_lemma), and without the lemma
+// when the overlap check is off. Counts: local_faces (interior
 // faces tested), queried_tets, lemma (1 when the lemma was used), candidates (points in a
 // queried box), signs_evaluated.
 #include <algorithm>
@@ -115,75 +122,6 @@ bool tets_and_vertices_qualify(const Context& c) {
   return std::find(used.begin(), used.end(), std::uint8_t{0}) == used.end();
 }
 
-// The boundary faces' boxes bucketed in the vertex grid's top frame, and per cell the
-// Chebyshev distance in cells to the nearest cell holding one (capped at kClear): a box
-// whose cell range lies within that distance of its low cell meets none, in one lookup.
-// (Cells are monotone in the coordinates, grid.hpp: two boxes that meet share the cell of
-// a common point, which lies in both cell ranges.)
-class BoundaryCells {
- public:
-  static constexpr int kClear = 7;
-
-  explicit BoundaryCells(const Context& c) : frame_(c.grid.frame()) {
-    const auto& pts = c.mesh.points;
-    const auto& boundary = c.topology.boundary;
-    boxes_.reserve(boundary.size());
-    std::vector<std::uint32_t> ids(boundary.size());
-    for (std::size_t i = 0; i < boundary.size(); ++i) {
-      boxes_.push_back(box_of<3>(pts, c.topology.faces[boundary[i]]));
-      ids[i] = static_cast<std::uint32_t>(i);
-    }
-    cells_ = grid_detail::bucket(frame_, boxes_, ids);
-    // Per axis in turn, d(x) = min over |k| <= kClear of max(|k|, d(x + k along the axis)):
-    // the three passes give min(kClear, Chebyshev distance).
-    const auto& dims = frame_.dims();
-    clear_.resize(frame_.size());
-    for (std::size_t i = 0; i < clear_.size(); ++i)
-      clear_[i] = cells_.start[i + 1] > cells_.start[i] ? 0 : kClear;
-    std::vector<std::uint8_t> row;
-    for (int axis = 0; axis < 3; ++axis) {
-      const int n = dims[static_cast<std::size_t>(axis)];
-      const std::size_t stride = axis == 0 ? 1 : axis == 1 ? static_cast<std::size_t>(dims[0])
-                                                         : static_cast<std::size_t>(dims[0]) * dims[1];
-      row.resize(static_cast<std::size_t>(n));
-      for (std::size_t first = 0; first < clear_.size(); ++first) {
-        // `first` starts a line along the axis when its coordinate on the axis is 0.
-        if ((first / stride) % static_cast<std::size_t>(n) != 0) continue;
-        for (int x = 0; x < n; ++x) row[static_cast<std::size_t>(x)] = clear_[first + x * stride];
-        for (int x = 0; x < n; ++x) {
-          int d = row[static_cast<std::size_t>(x)];
-          for (int k = 1; k < d && k <= kClear; ++k) {
-            if (x - k >= 0) d = std::min(d, std::max<int>(k, row[static_cast<std::size_t>(x - k)]));
-            if (x + k < n) d = std::min(d, std::max<int>(k, row[static_cast<std::size_t>(x + k)]));
-          }
-          clear_[first + x * stride] = static_cast<std::uint8_t>(d);
-        }
-      }
-    }
-  }
-
-  // Whether `box` meets the box of some boundary face.
-  bool meets(const Box& box) const {
-    const auto a = frame_.cell_of(box.lo), z = frame_.cell_of(box.hi);
-    const int span = std::max({z[0] - a[0], z[1] - a[1], z[2] - a[2]});
-    if (clear_[frame_.index(a)] > span) return false;
-    for (int k = a[2]; k <= z[2]; ++k)
-      for (int j = a[1]; j <= z[1]; ++j)
-        for (int i = a[0]; i <= z[0]; ++i) {
-          const std::size_t cell = frame_.index(i, j, k);
-          for (std::size_t s = cells_.start[cell]; s < cells_.start[cell + 1]; ++s)
-            if (boxes_meet(box, boxes_[cells_.ids[s]])) return true;
-        }
-    return false;
-  }
-
- private:
-  const GridFrame& frame_;
-  std::vector<Box> boxes_;
-  grid_detail::Buckets cells_;
-  std::vector<std::uint8_t> clear_;
-};
-
 }  // namespace
 
 bool used_lemma(const CheckResult& r) {
@@ -205,11 +143,14 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
   if (local.ok) local = local_faces(c);
   const bool lemma = local.ok;
   std::vector<std::uint8_t> tied;
-  std::optional<BoundaryCells> near;
+  std::optional<BoxCells> near;  // the boundary faces' boxes
   if (lemma) {
     tied.assign(tets.size(), 0);
     for (std::uint32_t t : local.tied) tied[t] = 1;
-    near.emplace(c);
+    std::vector<Box> boundary;
+    boundary.reserve(c.topology.boundary.size());
+    for (std::uint32_t f : c.topology.boundary) boundary.push_back(box_of<3>(pts, c.topology.faces[f]));
+    near.emplace(c.grid.frame(), std::move(boundary));
   }
   parallel_blocks(tets.size(), o.threads, 1024, [&](unsigned w, std::size_t b, std::size_t e) {
     Collector& col = parts[w];
@@ -276,7 +217,7 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
     col.counts["exact_evaluations"] += signs::exact_evaluations() - before;
   });
   merge_into(parts, r, o.max_reported);
-  r.counts["local_faces"] = local.tested;
+  r.counts["local_faces"] = lemma ? local.tested : 0;  // (an early stop's count depends on timing)
   r.counts["lemma"] = lemma ? 1 : 0;
   conclude(r);
   return r;

@@ -135,6 +135,53 @@ void PointGrid::build(std::span<const Point> points, const Box& extent, std::uin
   }
 }
 
+BoxCells::BoxCells(const GridFrame& frame, std::vector<Box> boxes)
+    : frame_(frame), boxes_(std::move(boxes)) {
+  std::vector<std::uint32_t> all(boxes_.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
+  grid_detail::Buckets b = grid_detail::bucket(frame_, boxes_, all);
+  start_ = std::move(b.start);
+  ids_ = std::move(b.ids);
+  clear_.resize(frame_.size());
+  for (std::size_t c = 0; c < clear_.size(); ++c) clear_[c] = start_[c + 1] > start_[c] ? 0 : kClear;
+  const auto& dims = frame_.dims();
+  std::vector<std::uint8_t> line;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const auto n = static_cast<std::size_t>(dims[axis]);
+    const std::size_t stride = axis == 0 ? 1
+                               : axis == 1 ? static_cast<std::size_t>(dims[0])
+                                           : static_cast<std::size_t>(dims[0]) * static_cast<std::size_t>(dims[1]);
+    line.resize(n);
+    for (std::size_t first = 0; first < clear_.size(); ++first) {
+      if ((first / stride) % n != 0) continue;  // not the start of a line along the axis
+      for (std::size_t x = 0; x < n; ++x) line[x] = clear_[first + x * stride];
+      for (std::size_t x = 0; x < n; ++x) {
+        int d = line[x];
+        for (int k = 1; k < d; ++k) {  // a neighbour k cells away offers max(k, its d) >= k
+          const auto uk = static_cast<std::size_t>(k);
+          if (x >= uk) d = std::min(d, std::max<int>(k, line[x - uk]));
+          if (x + uk < n) d = std::min(d, std::max<int>(k, line[x + uk]));
+        }
+        clear_[first + x * stride] = static_cast<std::uint8_t>(d);
+      }
+    }
+  }
+}
+
+bool BoxCells::meets(const Box& box) const {
+  const auto a = frame_.cell_of(box.lo), z = frame_.cell_of(box.hi);
+  const int span = std::max({z[0] - a[0], z[1] - a[1], z[2] - a[2]});
+  if (clear_[frame_.index(a)] > span) return false;
+  for (int k = a[2]; k <= z[2]; ++k)
+    for (int j = a[1]; j <= z[1]; ++j)
+      for (int i = a[0]; i <= z[0]; ++i) {
+        const std::size_t cell = frame_.index(i, j, k);
+        for (std::size_t s = start_[cell]; s < start_[cell + 1]; ++s)
+          if (boxes_meet(box, boxes_[ids_[s]])) return true;
+      }
+  return false;
+}
+
 namespace grid_detail {
 
 Buckets bucket(const GridFrame& frame, std::span<const Box> boxes, std::span<const std::uint32_t> ids,

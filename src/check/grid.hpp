@@ -188,6 +188,29 @@ class PointGrid {
   int depth_ = 0;
 };
 
+// Boxes bucketed by the cells of a frame their [lo, hi] meets, for "does this box meet any
+// of them": two boxes that meet share the cell of a common point (monotone cells), which
+// lies in both cell ranges. Per cell, also the Chebyshev distance in cells to the nearest
+// cell holding a box, capped at kClear (three passes, one per axis: d(x) = min over |k| <=
+// kClear of max(|k|, d(x + k e_axis)) computes min(kClear, that distance) because the
+// Chebyshev norm is the max of the axes'), so a query box whose cell range lies within its
+// low cell's clearance is answered in one lookup.
+class BoxCells {
+ public:
+  static constexpr int kClear = 7;
+
+  BoxCells(const GridFrame& frame, std::vector<Box> boxes);
+  // Whether the closed box meets some stored closed box.
+  bool meets(const Box& box) const;
+
+ private:
+  GridFrame frame_;
+  std::vector<Box> boxes_;
+  std::vector<std::size_t> start_;    // per cell: its boxes are ids_[start_[c] .. start_[c + 1])
+  std::vector<std::uint32_t> ids_;
+  std::vector<std::uint8_t> clear_;   // per cell
+};
+
 // Every pair of boxes whose closed boxes intersect, once: f(worker, s, t) with s, t indices
 // into `boxes` (in no particular order), from `threads` workers. Boxes with lo > hi on some
 // axis (empty) are never reported. Cells hold about `per_cell` boxes; a cell holding more

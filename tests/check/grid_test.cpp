@@ -229,5 +229,35 @@ RC_GTEST_PROP(Grid, BoxPairsAreEveryIntersectingPairOnce, ()) {
   RC_ASSERT(all.size() == expected);
 }
 
+// BoxCells (the Delaunay check's boundary faces): whether a query box meets a stored box,
+// against brute force, on frames of a few to thousands of cells (some flat on an axis),
+// with sparse boxes (most cells far from any: the clearance answers) and boxes reaching
+// outside the frame (clamped into its edge cells).
+RC_GTEST_PROP(Grid, BoxCellsSayWhetherABoxMeetsAStoredOne, ()) {
+  auto unit = [] { return *rc::gen::inRange(-64, 1024 + 64) / 1024.0; };
+  const bool flat = *rc::gen::arbitrary<bool>();
+  const Box extent{{0, 0, 0}, {1, 1, flat ? 0.0 : 1.0}};
+  const GridFrame frame(extent, *rc::gen::element(1.0, 30.0, 500.0, 8000.0));
+  const auto box_at = [&](double size) {
+    const Point a{unit(), unit(), flat ? 0.0 : unit()};
+    Point b = a;
+    for (int i = 0; i < 3; ++i) b[i] += size * *rc::gen::inRange(0, 100) / 100.0;
+    return Box{a, b};
+  };
+  std::vector<Box> stored;
+  const int n = *rc::gen::inRange(0, 12);
+  for (int i = 0; i < n; ++i) stored.push_back(box_at(*rc::gen::element(0.0, 0.01, 0.2)));
+  const BoxCells cells(frame, stored);
+  int met = 0;
+  for (int q = 0; q < 400; ++q) {
+    const Box query = box_at(*rc::gen::element(0.0, 0.02, 0.1, 0.5));
+    bool brute = false;
+    for (const Box& b : stored) brute = brute || boxes_meet(query, b);
+    RC_ASSERT(cells.meets(query) == brute);
+    met += brute ? 1 : 0;
+  }
+  RC_TAG(met == 0 ? "none met" : "some met");
+}
+
 }  // namespace
 }  // namespace pdr::check
