@@ -160,7 +160,7 @@ std::optional<MeshData> two_triangulations(const std::vector<int>& a, const std:
 
 void expect_lemma_agrees(double shift, bool apart) {
   // Points in [0, 1)^3 each; overlapping, the same cloud twice.
-  const auto cloud = [] { return *rc::gen::container<std::vector<int>>(3 * 14, rc::gen::inRange(0, 64)); };
+  const auto cloud = [] { return *rc::gen::container<std::vector<int>>(3 * 9, rc::gen::inRange(0, 64)); };
   const std::vector<int> a = cloud();
   const std::optional<MeshData> both = two_triangulations(a, apart ? cloud() : a, shift);
   RC_PRE(both.has_value());
