@@ -406,18 +406,14 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     std::vector<std::string> failed = record_check(report, other, summary);
     if (other) code = kExitViolations;
     // Remarks 1-2: the mesh is DT(V) restricted to the domain, whatever the insertion
-    // order (order_check.hpp): implied by the check when no vertex lies on a tet's
-    // circumsphere, else DT(V) rebuilt here in a seeded order unlike the mesher's.
+    // order (order_check.hpp): decided from the check's vertices on spheres where it
+    // passed, else DT(V) rebuilt here in a seeded order unlike the mesher's.
     progress.phase("order check");
     const bool implied = order_implied(report);
-    OrderCheck oc;
-    if (implied) {
-      oc.seed = kOrderCheckSeed;
-      oc.tets = mesh.tets.size();
-    } else {
-      oc = check_order_independence(mesh, rebuild_dt(mesh.points, kOrderCheckSeed),
-                                    kOrderCheckSeed, 10, true, threads);
-    }
+    const OrderCheck oc =
+        implied ? order_from_report(mesh, report, kOrderCheckSeed)
+                : check_order_independence(mesh, rebuild_dt(mesh.points, kOrderCheckSeed),
+                                           kOrderCheckSeed, 10, true, threads);
     timer.lap("order_check");
     summary.set("order_independence",
                 nlohmann::json{{"seed", oc.seed}, {"tets", oc.tets}, {"missing", oc.missing},

@@ -113,9 +113,36 @@ bool order_implied(const check::Report& report) {
     const check::CheckResult* r = report.find(id);
     if (!r || r->status != check::Status::Pass) return false;
   }
-  const auto& counts = report.find("delaunay.empty_sphere")->counts;
-  const auto on_sphere = counts.find("cospherical");
-  return on_sphere != counts.end() && on_sphere->second == 0;
+  return report.on_sphere_complete;
+}
+
+OrderCheck order_from_report(const MeshData& mesh, const check::Report& report, std::uint64_t seed,
+                             std::size_t max_listed) {
+  OrderCheck r;
+  r.seed = seed;
+  r.rebuilt = false;
+  r.tets = mesh.tets.size();
+  const auto& pairs = report.on_sphere;  // sorted by tet
+  for (std::size_t i = 0; i < pairs.size();) {
+    const std::uint64_t t = pairs[i].first;
+    const auto& k = mesh.tets[t];
+    const Point &a = mesh.points[k[0]], &b = mesh.points[k[1]], &c = mesh.points[k[2]],
+                &d = mesh.points[k[3]];
+    const Sign o = orient3d(a, b, c, d);
+    std::int64_t inside = -1;
+    for (; i < pairs.size() && pairs[i].first == t; ++i)
+      if (inside < 0 && insphere_sos(a, b, c, d, mesh.points[pairs[i].second]) * o == Sign::Positive)
+        inside = pairs[i].second;
+    if (inside < 0) continue;
+    ++r.missing;
+    if (r.first.size() < max_listed) {
+      r.first.push_back(sorted({k[0], k[1], k[2], k[3]}));
+      r.first_index.push_back(t);
+      r.first_tie_vertex.push_back(inside);
+    }
+  }
+  r.ties = r.missing;
+  return r;
 }
 
 OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
@@ -178,25 +205,18 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
       return c;
     }
   }
-  if (order_implied(report)) {
-    c.status = check::Status::Pass;
-    c.checked = mesh.tets.size();
-    c.counts["seed"] = seed;
-    c.counts["missing"] = 0;
-    c.counts["cospherical_ties"] = 0;
-    c.counts["implied"] = 1;
-    c.reason = "implied by delaunay.empty_sphere: no vertex on any tet's circumsphere, so "
-               "every tet is a tet of DT(V)";
-    return c;
-  }
+  const bool implied = order_implied(report);
+  if (implied) c.counts["implied"] = 1;
   // A tie is a difference of tie-breaking only on a Delaunay mesh: a tet with a vertex
   // strictly inside its sphere can have another one exactly on it.
   const check::CheckResult* empty = report.find("delaunay.empty_sphere");
   const bool delaunay = empty && empty->status == check::Status::Pass;
-  const OrderCheck oc = check_order_independence(mesh, rebuild_dt(mesh.points, seed), seed,
-                                                report.options.max_reported, delaunay,
-                                                report.options.threads);
-  if (!oc.rebuilt) {
+  const OrderCheck oc =
+      implied ? order_from_report(mesh, report, seed, report.options.max_reported)
+              : check_order_independence(mesh, rebuild_dt(mesh.points, seed), seed,
+                                         report.options.max_reported, delaunay,
+                                         report.options.threads);
+  if (!implied && !oc.rebuilt) {
     c.status = check::Status::Skipped;
     c.reason = "the vertices do not span space: no DT(V) to rebuild";
     return c;
@@ -217,7 +237,9 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
     if (tie) f.vertices.push_back(std::uint32_t(oc.first_tie_vertex[k]));
     for (std::uint32_t v : f.vertices) f.points.push_back(mesh.points[v]);
     f.message = "order.independence: tet " + std::to_string(oc.first_index[k]) +
-                " is not a tet of DT(V) rebuilt in another order" +
+                (implied ? " is not a tet of DT(V): the symbolic perturbation puts a vertex "
+                           "on its sphere inside"
+                         : " is not a tet of DT(V) rebuilt in another order") +
                 (tie ? " (a cospherical tie: its last vertex lies on the tet's circumsphere)"
                      : "");
     c.findings.push_back(std::move(f));

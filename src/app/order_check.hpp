@@ -76,19 +76,26 @@ OrderCheck check_order_independence(const MeshData& mesh, std::uint64_t seed,
 // fail, or skipped; `violations` counts every missing tet (ties too, when it warns), and
 // the findings list them when the vertex set cannot be rebuilt (indices out of range, duplicate
 // or non-finite vertices: validity.* says why).
-// Where order_implied(report) holds, the check passes without a rebuild (counts: implied
-// 1); otherwise DT(V) is rebuilt here.
+// Where order_implied(report) holds, the check is decided from the report without a
+// rebuild (counts: implied 1); otherwise DT(V) is rebuilt here.
 void add_order_check(check::Report& report, const MeshData& mesh, std::uint64_t seed);
 
-// Whether the checker's own report proves order independence, so that nothing need be
+// Whether the checker's own report decides order independence, so that nothing need be
 // rebuilt: the mesh has tets, validity.indices, .coordinates, .duplicate_vertices and
-// .orientation passed, and delaunay.empty_sphere passed with no vertex on any tet's
-// circumsphere. Then every tet's closed circumball holds no vertex but its own four, and
-// such a tet is a tet of DT(V) whatever the perturbation (a sphere through exactly four
-// vertices, empty, is the circumsphere of a Delaunay cell that is a tet; the perturbation
-// only breaks ties among five or more cospherical vertices): the inclusion the rebuild
-// would test. The rebuild remains where ties leave the perturbation a choice, or where
-// the mesh is not Delaunay (to list what differs).
+// .orientation passed, and delaunay.empty_sphere passed and listed every vertex exactly on
+// a tet's circumsphere (check::Report::on_sphere_complete). A tet whose closed ball holds
+// no vertex but its own four is a tet of DT(V) under any perturbation (an empty sphere
+// through exactly four vertices bounds a Delaunay cell that is a tet); one whose sphere
+// also holds vertices v (none inside) is a tet of the perturbed DT(V) exactly when the
+// perturbation puts every such v outside, insphere_sos(tet, v) < 0 (the perturbation is
+// infinitesimal: every other vertex keeps its strict side). That is what the rebuild
+// decides by building DT(V); here it costs one perturbed sign per pair. The rebuild
+// remains where the mesh is not Delaunay (to list what differs) or the pairs are too many.
 bool order_implied(const check::Report& report);
+// The order check decided that way (precondition: order_implied(report)): the missing
+// tets are those with a vertex on the sphere that the perturbation puts inside, each a
+// tie (its first such vertex listed).
+OrderCheck order_from_report(const MeshData& mesh, const check::Report& report, std::uint64_t seed,
+                             std::size_t max_listed = 10);
 
 }  // namespace pdr::app

@@ -162,6 +162,13 @@ struct Report {
   std::vector<CheckResult> checks;
   std::map<std::string, double> seconds;  // wall time per phase; not reproducible, not in JSON
                                           // unless asked
+  // delaunay.empty_sphere's pairs of a tet and a vertex exactly on its circumsphere (tet
+  // index, vertex), sorted: every such pair when on_sphere_complete, which needs the check
+  // to have run and found at most kMaxOnSphere of them. The order check (src/app) decides
+  // from them which tets the symbolic perturbation keeps. Not in JSON.
+  static constexpr std::size_t kMaxOnSphere = std::size_t{1} << 22;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> on_sphere;
+  bool on_sphere_complete = false;
 
   bool ok() const;  // no check failed (warnings and skips allowed)
   const CheckResult* find(std::string_view id) const;

@@ -35,6 +35,10 @@ struct Context {
   // delaunay.empty_sphere for quality.ratio, which would compute the same enclosure; empty
   // until then (degenerate tets' entries are not set: both checks skip them).
   std::vector<Interval> circum_r2;
+  // delaunay.empty_sphere's on-sphere pairs (Report::on_sphere), per worker; each stops
+  // collecting beyond Report::kMaxOnSphere (then on_sphere_overflow is set).
+  std::vector<std::vector<std::pair<std::uint64_t, std::uint32_t>>> on_sphere;
+  bool on_sphere_overflow = false;
 };
 
 // orient3d(face key a<b<c, apex) from the holder's exact orientation: the sorted face and

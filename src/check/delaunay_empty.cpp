@@ -138,6 +138,8 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
   constexpr double kSmallBall = 16;  // radius 4 top cells
   const double side2 = c.grid.frame().side() * c.grid.frame().side();
   c.circum_r2.assign(tets.size(), Interval{});
+  c.on_sphere.assign(std::max(1u, o.threads), {});
+  std::atomic<bool> overflow{false};
   LocalFaces local;
   local.ok = by_lemma && tets_and_vertices_qualify(c);
   if (local.ok) local = local_faces(c);
@@ -182,6 +184,11 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
         const Sign in = signs::insphere(pa, pb, pc, pd, p) * s;
         if (in == Sign::Zero) {
           ++cospherical;
+          auto& pairs = c.on_sphere[w];
+          if (pairs.size() < Report::kMaxOnSphere)
+            pairs.emplace_back(t, v);
+          else
+            overflow.store(true, std::memory_order_relaxed);
         } else if (in == Sign::Positive) {
           ++inside;
           if (first < 0 || v < first) first = v;
@@ -216,6 +223,7 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
     col.counts["queried_tets"] += queried;
     col.counts["exact_evaluations"] += signs::exact_evaluations() - before;
   });
+  c.on_sphere_overflow = overflow.load();
   merge_into(parts, r, o.max_reported);
   r.counts["local_faces"] = lemma ? local.tested : 0;  // (an early stop's count depends on timing)
   r.counts["lemma"] = lemma ? 1 : 0;
