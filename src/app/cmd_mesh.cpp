@@ -411,7 +411,7 @@ int mesh_plc(const Plc& plc, const MeshArgs& args, Summary& summary, MeshData* m
     progress.phase("order check");
     const bool implied = order_implied(report);
     const OrderCheck oc =
-        implied ? order_from_report(mesh, report, kOrderCheckSeed)
+        implied ? order_from_report(mesh, report, kOrderCheckSeed, 10, threads)
                 : check_order_independence(mesh, rebuild_dt(mesh.points, kOrderCheckSeed),
                                            kOrderCheckSeed, 10, true, threads);
     timer.lap("order_check");

@@ -117,28 +117,35 @@ bool order_implied(const check::Report& report) {
 }
 
 OrderCheck order_from_report(const MeshData& mesh, const check::Report& report, std::uint64_t seed,
-                             std::size_t max_listed) {
+                             std::size_t max_listed, unsigned threads) {
   OrderCheck r;
   r.seed = seed;
   r.rebuilt = false;
   r.tets = mesh.tets.size();
   const auto& pairs = report.on_sphere;  // sorted by tet
+  // Each pair's perturbed side (an exact zero first: the costly case), on every thread.
+  std::vector<std::uint8_t> inside(pairs.size(), 0);
+  check::parallel_blocks(pairs.size(), threads, 1 << 10, [&](unsigned, std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      const auto& k = mesh.tets[pairs[i].first];
+      const Point &p0 = mesh.points[k[0]], &p1 = mesh.points[k[1]], &p2 = mesh.points[k[2]],
+                  &p3 = mesh.points[k[3]];
+      inside[i] = insphere_sos(p0, p1, p2, p3, mesh.points[pairs[i].second]) * orient3d(p0, p1, p2, p3) ==
+                  Sign::Positive;
+    }
+  });
   for (std::size_t i = 0; i < pairs.size();) {
     const std::uint64_t t = pairs[i].first;
-    const auto& k = mesh.tets[t];
-    const Point &a = mesh.points[k[0]], &b = mesh.points[k[1]], &c = mesh.points[k[2]],
-                &d = mesh.points[k[3]];
-    const Sign o = orient3d(a, b, c, d);
-    std::int64_t inside = -1;
+    std::int64_t tie = -1;
     for (; i < pairs.size() && pairs[i].first == t; ++i)
-      if (inside < 0 && insphere_sos(a, b, c, d, mesh.points[pairs[i].second]) * o == Sign::Positive)
-        inside = pairs[i].second;
-    if (inside < 0) continue;
+      if (tie < 0 && inside[i]) tie = pairs[i].second;
+    if (tie < 0) continue;
     ++r.missing;
     if (r.first.size() < max_listed) {
+      const auto& k = mesh.tets[t];
       r.first.push_back(sorted({k[0], k[1], k[2], k[3]}));
       r.first_index.push_back(t);
-      r.first_tie_vertex.push_back(inside);
+      r.first_tie_vertex.push_back(tie);
     }
   }
   r.ties = r.missing;
@@ -212,7 +219,8 @@ check::CheckResult order_check_result(const MeshData& mesh, const check::Report&
   const check::CheckResult* empty = report.find("delaunay.empty_sphere");
   const bool delaunay = empty && empty->status == check::Status::Pass;
   const OrderCheck oc =
-      implied ? order_from_report(mesh, report, seed, report.options.max_reported)
+      implied ? order_from_report(mesh, report, seed, report.options.max_reported,
+                                  report.options.threads)
               : check_order_independence(mesh, rebuild_dt(mesh.points, seed), seed,
                                          report.options.max_reported, delaunay,
                                          report.options.threads);

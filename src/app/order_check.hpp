@@ -96,6 +96,6 @@ bool order_implied(const check::Report& report);
 // tets are those with a vertex on the sphere that the perturbation puts inside, each a
 // tie (its first such vertex listed).
 OrderCheck order_from_report(const MeshData& mesh, const check::Report& report, std::uint64_t seed,
-                             std::size_t max_listed = 10);
+                             std::size_t max_listed = 10, unsigned threads = 1);
 
 }  // namespace pdr::app

@@ -155,12 +155,14 @@ Report run(const MeshView& mesh, const Plc* domain, Options o) {
       empty && used_lemma(*empty) && !(overlap && overlap->status == Status::Pass))
     *empty = geometry.time("delaunay", [&] { return check_empty_circumspheres(c, false); });
   for (Group* g : {&front, &checked_validity, &geometry, &checked_domain}) g->report_into(rep);
-  std::size_t on_sphere = 0;
-  for (const auto& part : c.on_sphere) on_sphere += part.size();
-  rep.on_sphere.reserve(on_sphere);
-  for (const auto& part : c.on_sphere) rep.on_sphere.insert(rep.on_sphere.end(), part.begin(), part.end());
-  std::sort(rep.on_sphere.begin(), rep.on_sphere.end());
-  rep.on_sphere_complete = !c.on_sphere.empty() && !c.on_sphere_overflow && on_sphere <= Report::kMaxOnSphere;
+  rep.on_sphere_complete = !c.on_sphere.empty() && !c.on_sphere_overflow;
+  if (rep.on_sphere_complete) {
+    std::size_t on_sphere = 0;
+    for (const auto& part : c.on_sphere) on_sphere += part.size();
+    rep.on_sphere.reserve(on_sphere);
+    for (const auto& part : c.on_sphere) rep.on_sphere.insert(rep.on_sphere.end(), part.begin(), part.end());
+    std::sort(rep.on_sphere.begin(), rep.on_sphere.end());
+  }
   if (!domain) skip_rest(rep, "no domain given");
   return rep;
 }

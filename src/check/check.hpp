@@ -166,7 +166,7 @@ struct Report {
   // index, vertex), sorted: every such pair when on_sphere_complete, which needs the check
   // to have run and found at most kMaxOnSphere of them. The order check (src/app) decides
   // from them which tets the symbolic perturbation keeps. Not in JSON.
-  static constexpr std::size_t kMaxOnSphere = std::size_t{1} << 22;
+  static constexpr std::size_t kMaxOnSphere = std::size_t{1} << 20;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> on_sphere;
   bool on_sphere_complete = false;
 

@@ -35,8 +35,8 @@ struct Context {
   // delaunay.empty_sphere for quality.ratio, which would compute the same enclosure; empty
   // until then (degenerate tets' entries are not set: both checks skip them).
   std::vector<Interval> circum_r2;
-  // delaunay.empty_sphere's on-sphere pairs (Report::on_sphere), per worker; each stops
-  // collecting beyond Report::kMaxOnSphere (then on_sphere_overflow is set).
+  // delaunay.empty_sphere's on-sphere pairs (Report::on_sphere), per worker; beyond
+  // Report::kMaxOnSphere in all, on_sphere_overflow is set and the lists are dropped.
   std::vector<std::vector<std::pair<std::uint64_t, std::uint32_t>>> on_sphere;
   bool on_sphere_overflow = false;
 };

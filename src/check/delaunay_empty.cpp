@@ -50,7 +50,8 @@
 // check again with every tet queried when that fails (used_lemma), and without the lemma
 // when the overlap check is off. Counts: local_faces (interior
 // faces tested), queried_tets, lemma (1 when the lemma was used), candidates (points in a
-// queried box), signs_evaluated.
+// queried box), signs_evaluated. The pairs of a tet and a vertex on its sphere are kept
+// too (Context::on_sphere, up to Report::kMaxOnSphere): the order check decides from them.
 #include <algorithm>
 #include <atomic>
 #include <optional>
@@ -139,7 +140,7 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
   const double side2 = c.grid.frame().side() * c.grid.frame().side();
   c.circum_r2.assign(tets.size(), Interval{});
   c.on_sphere.assign(std::max(1u, o.threads), {});
-  std::atomic<bool> overflow{false};
+  std::atomic<std::size_t> on_sphere_claimed{0};  // one cap over every worker's list
   LocalFaces local;
   local.ok = by_lemma && tets_and_vertices_qualify(c);
   if (local.ok) local = local_faces(c);
@@ -184,11 +185,8 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
         const Sign in = signs::insphere(pa, pb, pc, pd, p) * s;
         if (in == Sign::Zero) {
           ++cospherical;
-          auto& pairs = c.on_sphere[w];
-          if (pairs.size() < Report::kMaxOnSphere)
-            pairs.emplace_back(t, v);
-          else
-            overflow.store(true, std::memory_order_relaxed);
+          if (on_sphere_claimed.fetch_add(1, std::memory_order_relaxed) < Report::kMaxOnSphere)
+            c.on_sphere[w].emplace_back(t, v);
         } else if (in == Sign::Positive) {
           ++inside;
           if (first < 0 || v < first) first = v;
@@ -223,7 +221,8 @@ CheckResult check_empty_circumspheres(Context& c, bool by_lemma) {
     col.counts["queried_tets"] += queried;
     col.counts["exact_evaluations"] += signs::exact_evaluations() - before;
   });
-  c.on_sphere_overflow = overflow.load();
+  c.on_sphere_overflow = on_sphere_claimed.load() > Report::kMaxOnSphere;
+  if (c.on_sphere_overflow) c.on_sphere.clear();  // an incomplete list decides nothing
   merge_into(parts, r, o.max_reported);
   r.counts["local_faces"] = lemma ? local.tested : 0;  // (an early stop's count depends on timing)
   r.counts["lemma"] = lemma ? 1 : 0;

@@ -12,6 +12,7 @@
 #include "delaunay/bulk.hpp"
 #include "delaunay/delaunay.hpp"
 #include "delaunay/export.hpp"
+#include "geom/predicates.hpp"
 #include "mesh_gen.hpp"
 
 namespace pdr::check::test {
@@ -217,6 +218,42 @@ TEST(Delaunay, LemmaQueriesOnlyTetsNearTheBoundaryOrAtATie) {
   EXPECT_LT(count(rg, "delaunay.empty_sphere", "queried_tets"), g.tets.size() * 3 / 4)
       << g.tets.size() << " tets";
   EXPECT_EQ(count(rg, "delaunay.empty_sphere", "cospherical"), 0u);
+}
+
+// The on-sphere pairs the order check decides from (Report::on_sphere) are every pair of a
+// tet and a vertex exactly on its sphere, also where the lemma searched only the tets at a
+// tie: a jittered grid in general position around one exact cube deep inside, whose eight
+// corners are cospherical. Brute force with the kernel's predicates (not the checker's).
+TEST(Delaunay, OnSpherePairsAreEveryCosphericalPair) {
+  std::vector<Point> pts;
+  const int n = 9;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const bool cube = i >= 4 && i <= 5 && j >= 4 && j <= 5 && k >= 4 && k <= 5;
+        pts.push_back({i + (cube ? 0 : 0.01 * ((i * 7 + j * 3 + k) % 5)),
+                       j + (cube ? 0 : 0.013 * ((i + j * 5) % 7)),
+                       k + (cube ? 0 : 0.007 * ((j + k * 3) % 11))});
+      }
+  Delaunay dt(pts);
+  ASSERT_EQ(bulk_insert(dt, BulkOptions{}).status, BulkStatus::Ok);
+  const MeshData m = to_mesh_data(dt);
+  const Report r = run(m);
+  EXPECT_TRUE(r.ok()) << to_text(r);
+  EXPECT_EQ(count(r, "delaunay.empty_sphere", "lemma"), 1u);
+  EXPECT_LT(count(r, "delaunay.empty_sphere", "queried_tets"), m.tets.size() * 3 / 4);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> brute;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    const Tet& k = m.tets[t];
+    const Point &a = m.points[k[0]], &b = m.points[k[1]], &c = m.points[k[2]], &d = m.points[k[3]];
+    for (std::uint32_t v = 0; v < m.points.size(); ++v)
+      if (std::find(k.begin(), k.end(), v) == k.end() && pdr::insphere(a, b, c, d, m.points[v]) == Sign::Zero)
+        brute.emplace_back(t, v);
+  }
+  EXPECT_GT(brute.size(), 0u);
+  EXPECT_TRUE(r.on_sphere_complete);
+  EXPECT_EQ(r.on_sphere, brute);
+  EXPECT_EQ(count(r, "delaunay.empty_sphere", "cospherical"), brute.size());
 }
 
 }  // namespace
