@@ -1,5 +1,6 @@
-// The order-independence check (order_check.hpp): DT(V) rebuilt in another order contains
-// every mesh tet; a tet it lacks is a cospherical tie or a violation.
+// The order-independence check (order_check.hpp): every mesh tet is a tet of DT(V), decided
+// from the checker's report where it found the mesh Delaunay, else by DT(V) rebuilt in
+// another order; a tet it lacks is a cospherical tie or a violation.
 #include "app/order_check.hpp"
 
 #include <algorithm>

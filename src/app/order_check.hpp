@@ -2,7 +2,9 @@
 // parallel layer): the mesh must be the Delaunay tetrahedralization of its own vertex set,
 // restricted to the domain, whatever order the vertices were inserted in.
 //
-// check_order_independence rebuilds DT(V) of the mesh's vertices from scratch by bulk
+// Where the checker already found the mesh Delaunay, its report decides (order_implied,
+// order_from_report below: one perturbed insphere per vertex found on a tet's sphere).
+// Otherwise check_order_independence rebuilds DT(V) of the mesh's vertices from scratch by bulk
 // insertion in a seeded BRIO order (not the order the mesher inserted them in) and looks up
 // every mesh tet, as its sorted vertex quadruple, among DT(V)'s. Symbolic perturbation makes
 // DT(V) unique (docs/design.md §5), so every mesh tet of pdr's must be found. With the
