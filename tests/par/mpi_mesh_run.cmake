@@ -17,8 +17,9 @@
 #                         for it (parallel.per_rank[r].deferred.cap)
 #   [-DWANT_LISTED=ON|OFF] the ranks listed the mesh themselves (parallel.listed_by_ranks:
 #                         par/mesh_parts.hpp), or rank 0 assembled it
-#   [-DWANT_UNWRITABLE=ON] OUT is made a regular file and the run writes under OUT/mesh,
-#                         which cannot be created: no temporary may be left beside OUT
+#   [-DWANT_UNWRITABLE=ON] OUT is a directory holding a regular file OUT/blocker, and the
+#                         run writes under OUT/blocker/mesh, which cannot be created: no
+#                         temporary may be left in OUT
 #   [-DWANT_WRITTEN=ON|OFF] the ranks wrote their parts of OUT.node/.ele/.face themselves
 #                         (parallel.written_by_ranks: par/rank_files.hpp), or rank 0 did;
 #                         either way `pdr check OUT --domain DOMAIN --ratio 2` passes on
@@ -27,11 +28,13 @@ cmake_minimum_required(VERSION 3.25)  # every policy NEW (no CMP0053 warnings on
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 set(run_out ${OUT})
 if(WANT_UNWRITABLE)
-  get_filename_component(dir "${OUT}" DIRECTORY)
+  # A directory of its own: the other tests write beside their prefixes meanwhile (ctest
+  # -j), and their temporaries are not this run's.
+  set(dir "${OUT}")
+  file(REMOVE_RECURSE "${dir}")
   file(MAKE_DIRECTORY "${dir}")
-  file(REMOVE_RECURSE "${OUT}")
-  file(WRITE "${OUT}" "a file, not a directory\n")
-  set(run_out ${OUT}/mesh)
+  file(WRITE "${dir}/blocker" "a file, not a directory\n")
+  set(run_out ${dir}/blocker/mesh)
 endif()
 execute_process(
   COMMAND ${MPIEXEC} -n ${NP} --oversubscribe ${LAUNCH} ${PDR} mesh ${DOMAIN} -o ${run_out} ${args} --json
@@ -111,7 +114,6 @@ if(DEFINED WANT_LISTED)
   expect_parallel_flag(listed_by_ranks ${WANT_LISTED})
 endif()
 if(WANT_UNWRITABLE)
-  get_filename_component(dir "${OUT}" DIRECTORY)
   file(GLOB left "${dir}/*.tmp-*")
   if(left)
     message(FATAL_ERROR "temporaries left: ${left}")
