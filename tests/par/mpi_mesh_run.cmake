@@ -12,6 +12,7 @@
 #                         take all its tets (they migrate to the cavity's root), and the mesh
 #                         is as valid as any other
 #   [-DWANT_SUBMESHES=n]  the parallel phase cut M_o into n submeshes
+#   [-DWANT_INITIAL_TETS=k] M_o has about k inside tets (--initial-tets k): from 2k/3 to 3k/2
 #   [-DWANT_MAX_VERTICES=n] the run stopped at the vertex cap n: at most n vertices, a
 #                         stop_reason naming the cap, and some rank that deferred steps
 #                         for it (parallel.per_rank[r].deferred.cap)
@@ -86,6 +87,15 @@ if(WANT_SUBMESHES)
   string(JSON submeshes GET "${out}" parallel submeshes)
   if(NOT submeshes EQUAL WANT_SUBMESHES)
     message(FATAL_ERROR "parallel: ${submeshes} submeshes, expected ${WANT_SUBMESHES}\n${out}")
+  endif()
+endif()
+if(WANT_INITIAL_TETS)
+  string(JSON initial GET "${out}" parallel initial_tets)
+  math(EXPR low "${WANT_INITIAL_TETS} * 2 / 3")
+  math(EXPR high "${WANT_INITIAL_TETS} * 3 / 2")
+  if(initial LESS low OR initial GREATER high)
+    message(FATAL_ERROR "parallel: M_o has ${initial} inside tets, asked for about "
+                        "${WANT_INITIAL_TETS} (from ${low} to ${high})\n${out}")
   endif()
 endif()
 if(WANT_MAX_VERTICES)
