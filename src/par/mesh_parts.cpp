@@ -99,6 +99,7 @@ void add_part(const Submesh& s, const VertexNumbers& num, std::span<const int> f
     q.add(pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
     const Tet n{number[v[0]], number[v[1]], number[v[2]], number[v[3]]};
     out.tets.push_back(n);
+    if (!RefinementRules::may_have_subfacet(s, v)) continue;  // most tets: no face to look up
     for (int f = 0; f < 4; ++f) {
       const std::uint32_t facet = face_facet(s, t, f);
       if (facet == kNoLabel) continue;

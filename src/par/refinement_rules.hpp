@@ -149,6 +149,13 @@ class RefinementRules final : public StepRules {
     for (int i = 0; i < 4; ++i) n += s.tag(v[i]) != kInterior;
     return n >= 2;
   }
+  // False: no face of the tet with vertices v (of s) is a subfacet, since at most two of
+  // its vertices may lie on ∂Ω.
+  static bool may_have_subfacet(const Submesh& s, const VertexId* v) {
+    int n = 0;
+    for (int i = 0; i < 4; ++i) n += s.tag(v[i]) != kInterior;
+    return n >= 3;
+  }
 
  private:
   using Key = std::array<Gid, 3>;
