@@ -55,7 +55,9 @@ double inside_volume(const refine::VolumeMesh& m) {
 // never finer than the user asked (no size bound: none here). Refinement under a volume
 // bound V stops once no tet exceeds V, so its tets average less: about V / kFill
 // (measured on cube-in-cube: 188K tets under the bound volume / 100K, 94K under volume /
-// 50K), and about `tets` of them need the bound kFill * volume / tets. The same for tets at
+// 50K), and about `tets` of them need the bound kFill * volume / tets. Calibrated for the
+// volume bound only: where the user gives a radius bound (--size) and no volume bound,
+// its floor cbrt(v0) binds earlier and M_o has more tets. The same for tets at
 // the boundary when the parallel phase refines D too (`surface_steps`); else the user's
 // bounds there, so that D is refined about as far as the final mesh needs, and the
 // phase, which then defers every step on ∂Ω, rarely meets it.
