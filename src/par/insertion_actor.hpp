@@ -110,7 +110,7 @@ class InsertionActor {
     return !active_ && !has_ready() && delayed_.empty() && parked_.empty();
   }
   // The last step() handled a message or did work of its own; a search of this rank waits
-  // for replies (the idle policy only yields then: par/idle.hpp).
+  // for replies (the idle policy's sleeps stay short then: par/idle.hpp).
   bool worked() const { return worked_; }
   bool waiting() const { return active_ && !again_; }
   // Refinement: the points this rank committed, in order.
