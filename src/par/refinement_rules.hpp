@@ -142,19 +142,18 @@ class RefinementRules final : public StepRules {
   // Whether a vertex made in the phase with this tag lies on ∂Ω (a subsegment midpoint or
   // a subfacet circumcenter; commit() tags them so).
   static bool made_on_d(std::uint8_t tag) { return tag == kSegment || tag == kFacet; }
+  // How many of the tet's vertices v (of s) may lie on ∂Ω (a tag other than interior).
+  static int may_lie_on_d(const Submesh& s, const VertexId* v) {
+    int n = 0;
+    for (int i = 0; i < 4; ++i) n += s.tag(v[i]) != kInterior;
+    return n;
+  }
   // False: no edge of the tet with vertices v (of s) is a subsegment and no face a
   // subfacet, since at most one of its vertices may lie on ∂Ω (most tets).
-  static bool may_touch_d(const Submesh& s, const VertexId* v) {
-    int n = 0;
-    for (int i = 0; i < 4; ++i) n += s.tag(v[i]) != kInterior;
-    return n >= 2;
-  }
-  // False: no face of the tet with vertices v (of s) is a subfacet, since at most two of
-  // its vertices may lie on ∂Ω.
+  static bool may_touch_d(const Submesh& s, const VertexId* v) { return may_lie_on_d(s, v) >= 2; }
+  // False: no face of the tet is a subfacet, since at most two of its vertices may lie on ∂Ω.
   static bool may_have_subfacet(const Submesh& s, const VertexId* v) {
-    int n = 0;
-    for (int i = 0; i < 4; ++i) n += s.tag(v[i]) != kInterior;
-    return n >= 3;
+    return may_lie_on_d(s, v) >= 3;
   }
 
  private:
