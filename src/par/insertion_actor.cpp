@@ -100,13 +100,13 @@ bool InsertionActor::next_ready(Waiting& w, int& skips, bool remote) {
 
 void InsertionActor::send(int to, Bytes b) { t_.send(to, std::move(b)); }
 
-bool InsertionActor::step() {
+bool InsertionActor::step(Clock::time_point& now) {
   ++tick_;
   // Table 1's clocks: a message's handling is charged by its kind (a reply to this rank's
   // search to the search; a request served while that search waits is masked); the rest
   // of the poll is polling.
   double handled = 0;
-  const auto p0 = Clock::now();
+  const Clock::time_point p0 = now;
   const std::size_t got = t_.poll(
       [&](int from, std::span<const std::byte> m) {
         const bool waiting_now = waiting();
@@ -126,6 +126,12 @@ bool InsertionActor::step() {
       16);
   worked_ = got > 0;
   const auto w0 = Clock::now();  // the poll's end, and the work's start
+  now = w0;
+  // The work's seconds, from one reading at its end (the step's last: `now`).
+  const auto work_s = [&] {
+    now = Clock::now();
+    return std::chrono::duration<double>(now - w0).count();
+  };
   const double polling = std::chrono::duration<double>(w0 - p0).count() - handled;
   stats_.poll_s += polling;
   if (got == 0 && !idle() && !waiting()) stats_.poll_excess_s += polling;
@@ -145,7 +151,7 @@ bool InsertionActor::step() {
     again_ = false;
     round();
     worked_ = true;
-    charge_search(since(w0));
+    charge_search(work_s());
   } else if (!active_ && has_ready()) {
     worked_ = true;
     int skips = kDropsPerStep;
@@ -155,9 +161,9 @@ bool InsertionActor::step() {
       if (--skips <= 0) break;
     }
     if (active_ || end_ != End::None)
-      charge_search(since(w0));
+      charge_search(work_s());
     else
-      stats_.other_s += since(w0);  // tets gone, a point passed on
+      stats_.other_s += work_s();  // tets gone, a point passed on
   } else if (active_ && !again_ && has_local()) {  // waiting for replies: local steps
     worked_ = true;
     int skips = kDropsPerStep;
@@ -168,7 +174,7 @@ bool InsertionActor::step() {
       ++stats_.gone;
       if (--skips <= 0) break;
     }
-    stats_.masked_local_s += since(w0);
+    stats_.masked_local_s += work_s();
   }
   if (worked_) td_.activity();
   return td_.step(idle());

@@ -59,19 +59,28 @@ RankResult refine_part(const refine::VolumeMesh& m0, const Partition& part, Tran
   IdlePolicy idle;
   Clock::duration busy{};
   std::vector<std::uint8_t> done(actors.size(), 0);
+  // The clock readings chain: each step starts at the previous one's last reading (two
+  // readings a step, InsertionActor::step), and a fresh one is taken only after an
+  // iteration that did nothing (the idle policy may have slept).
+  auto now = Clock::now();
   for (std::size_t left = actors.size(); left > 0;) {
     bool worked = false, waiting = false;
     for (std::size_t i = 0; i < actors.size(); ++i) {
       if (done[i]) continue;
       InsertionActor& a = *actors[i];
-      const auto before = Clock::now();
-      const bool finished = a.step();
-      if (a.worked()) busy += Clock::now() - before;
+      const auto before = now;
+      const bool finished = a.step(now);
+      if (a.worked()) busy += now - before;
       worked = worked || a.worked();
       waiting = waiting || a.waiting();
       if (finished) done[i] = 1, --left;
     }
-    if (left > 0) idle.after_iteration(worked, waiting);
+    if (left > 0 && !worked) {
+      idle.after_iteration(false, waiting);
+      now = Clock::now();
+    } else if (left > 0) {
+      idle.after_iteration(true, waiting);
+    }
   }
   f.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   f.busy_seconds = std::chrono::duration<double>(busy).count();
