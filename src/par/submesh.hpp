@@ -74,7 +74,11 @@ inline constexpr std::uint32_t kNoLabel = 0xFFFFFFFFu;  // an edge or face witho
 // A face by the global ids of its vertices, sorted (orientation is not part of the key).
 struct FaceKey {
   std::array<Gid, 3> v{};
-  bool operator==(const FaceKey&) const = default;
+  // Three compares, inlined (the defaulted one calls memcmp: a call per probe of
+  // proxy_at_, the migrations' hottest lookup).
+  bool operator==(const FaceKey& o) const {
+    return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2];
+  }
 };
 FaceKey face_key(Gid a, Gid b, Gid c);
 struct FaceKeyHash {

@@ -139,5 +139,22 @@ TEST(Submesh, ForwardingRecordsNeverCircle) {
   EXPECT_FALSE(w.subs[1].moved(g, 0).has_value());  // back home: no record left
 }
 
+// A face's key names it in any vertex order: its ids sorted, and equal keys only for the
+// same three ids.
+TEST(Submesh, FaceKeyIsTheSortedIds) {
+  std::array<Gid, 3> ids{7, 1ull << 41, 3};
+  std::sort(ids.begin(), ids.end());
+  const FaceKey sorted{ids};
+  do {
+    const FaceKey k = face_key(ids[0], ids[1], ids[2]);
+    EXPECT_EQ(k.v, sorted.v);
+    EXPECT_TRUE(k == sorted);
+  } while (std::next_permutation(ids.begin(), ids.end()));
+  EXPECT_FALSE(face_key(7, 3, 8) == sorted);
+  EXPECT_FALSE(face_key(1ull << 41, 3, 3) == sorted);
+  EXPECT_FALSE((FaceKey{{3, 7, 1ull << 42}} == sorted));
+}
+
 }  // namespace
 }  // namespace pdr::par
+
