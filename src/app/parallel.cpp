@@ -8,11 +8,13 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
 #include <span>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 #include "io/mesh_io.hpp"
@@ -206,23 +208,27 @@ std::array<std::size_t, 3> write_parts(const std::string& prefix, const OwnPart&
                            std::to_string(total[1]) + " tets (their quality figures " +
                            std::to_string(quality_tets) + ")");
   }
-  std::array<io::TextSink, 3> out;
-  // About the lines' length (their pages advised for huge pages: mesh/huge_pages.hpp).
-  const std::array<std::size_t, 3> bytes{(own.points.size() + (w.rank == 0 ? m0.size() : 0)) * 72,
-                                         own.mesh.tets.size() * 48, own.mesh.faces.size() * 40};
-  for (std::size_t k = 0; k < 3; ++k) reserve_huge(out[k].text(), bytes[k] + 256);
+  // The .node and .face parts are formatted in memory (points' lengths are known only
+  // once formatted; faces are few); the .ele part, most of the bytes, is formatted as it
+  // is written, in pieces of about 1 MiB, its length counted first from the digits: its
+  // text never stands whole in memory (on a virtual machine whose fresh pages each cost a
+  // fault, that is tens of milliseconds a rank).
+  std::array<io::TextSink, 2> out;  // .node, .face
+  reserve_huge(out[0].text(), (own.points.size() + (w.rank == 0 ? m0.size() : 0)) * 72 + 256);
   const bool markers = total[2] > 0;  // as the joined mesh's face_markers (one per face)
+  io::TextSink ele_head, ele_tail;  // rank 0's header, the last rank's tail
   if (w.rank == 0) {
     io::tetgen_lines::node_header(out[0], total[0], false);
     io::tetgen_lines::nodes(out[0], m0, 0, {});
-    io::tetgen_lines::ele_header(out[1], total[1], false);
-    io::tetgen_lines::face_header(out[2], total[2], markers);
+    io::tetgen_lines::ele_header(ele_head, total[1], false);
+    io::tetgen_lines::face_header(out[1], total[2], markers);
   }
   io::tetgen_lines::nodes(out[0], own.points, first[0], {});
-  io::tetgen_lines::eles(out[1], own.mesh.tets, first[1], {});
-  io::tetgen_lines::faces(out[2], own.mesh.faces, first[2], own.mesh.face_markers);
-  if (w.rank == w.size - 1)
+  io::tetgen_lines::faces(out[1], own.mesh.faces, first[2], own.mesh.face_markers);
+  if (w.rank == w.size - 1) {
     for (io::TextSink& o : out) io::tetgen_lines::tail(o);
+    io::tetgen_lines::tail(ele_tail);
+  }
   if (w.rank == 0) {
     // A directory that cannot be made is reported when its files cannot be created.
     std::error_code ignored;
@@ -230,9 +236,23 @@ std::array<std::size_t, 3> write_parts(const std::string& prefix, const OwnPart&
       std::filesystem::create_directories(parent, ignored);
   }
   const std::vector<std::string> paths = io::output_paths(prefix, io::MeshFormat::TetGen);
-  const std::array<std::string, 3> texts{std::move(out[0].text()), std::move(out[1].text()),
-                                         std::move(out[2].text())};
-  par::write_in_rank_order(paths, texts);  // false elsewhere than rank 0: rank 0 ends the run
+  const auto whole = [](const std::string& text) {
+    return par::StreamedPart{text.size(), [&text](const std::function<void(std::string_view)>& put) { put(text); }};
+  };
+  const std::array<par::StreamedPart, 3> parts{
+      whole(out[0].text()),
+      par::StreamedPart{
+          ele_head.text().size() + io::tetgen_lines::eles_bytes(own.mesh.tets, first[1], {}) +
+              ele_tail.text().size(),
+          [&](const std::function<void(std::string_view)>& put) {
+            put(ele_head.text());
+            io::TextSink lines(put);
+            io::tetgen_lines::eles(lines, own.mesh.tets, first[1], {});
+            lines.flush();
+            put(ele_tail.text());
+          }},
+      whole(out[1].text())};
+  par::write_in_rank_order(paths, parts);  // false elsewhere than rank 0: rank 0 ends the run
   return total;
 }
 

@@ -1,15 +1,18 @@
-// TextSink: buffered formatting into an AtomicFile for the writers, or into memory (a part
-// of a file that several processes write: par/rank_files.hpp). Numbers are formatted with
-// std::to_chars: integers exactly, doubles in the shortest form that reads back to the
-// same bits (so a write/read round trip is bit-exact). The buffer is handed to the file in
-// chunks of about 1 MiB; flush() must be called before the file is committed.
+// TextSink: buffered formatting into an AtomicFile for the writers, into a function that
+// takes the text in pieces, or into memory (parts of a file that several processes write:
+// par/rank_files.hpp). Numbers are formatted with std::to_chars: integers exactly, doubles
+// in the shortest form that reads back to the same bits (so a write/read round trip is
+// bit-exact). The buffer is handed to the file or the function in chunks of about 1 MiB;
+// flush() must be called at the end (before the file is committed).
 #pragma once
 
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 
@@ -17,7 +20,12 @@ namespace pdr::io {
 
 class TextSink {
  public:
-  explicit TextSink(AtomicFile& file) : file_(&file) { buf_.reserve(kChunk + 256); }
+  explicit TextSink(AtomicFile& file) : file_(&file), limit_(kChunk) { buf_.reserve(kChunk + 256); }
+  // Into `out`, piece by piece, in order.
+  explicit TextSink(std::function<void(std::string_view)> out)
+      : out_(std::move(out)), limit_(kChunk) {
+    buf_.reserve(kChunk + 256);
+  }
   // Into memory: everything stays in text() (flush() does nothing).
   TextSink() = default;
   std::string& text() { return buf_; }
@@ -43,8 +51,12 @@ class TextSink {
   }
 
   void flush() {
-    if (file_ == nullptr) return;
-    file_->write(buf_);
+    if (file_ != nullptr)
+      file_->write(buf_);
+    else if (out_)
+      out_(buf_);
+    else
+      return;
     buf_.clear();
   }
 
@@ -60,10 +72,12 @@ class TextSink {
     return *this;
   }
   void maybe_flush() {
-    if (file_ != nullptr && buf_.size() >= kChunk) flush();
+    if (buf_.size() >= limit_) flush();
   }
 
   AtomicFile* file_ = nullptr;
+  std::function<void(std::string_view)> out_;
+  std::size_t limit_ = static_cast<std::size_t>(-1);  // flush from this size on: never in memory
   std::string buf_;
 };
 

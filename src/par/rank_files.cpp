@@ -9,9 +9,12 @@
 #include <cerrno>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/atomic_file.hpp"
@@ -20,12 +23,35 @@
 namespace pdr::par {
 namespace {
 
-// Writes `bytes` into the existing file `path` from `offset` on; 0, or the errno of the
+// Writes `part` from `offset` on, each piece by put(piece, at) (0, or an errno); 0, or
+// the errno of the first failure (the pieces after it are made and dropped).
+using PutAt = std::function<int(std::string_view, std::uint64_t)>;
+int write_part(const PutAt& put, const StreamedPart& part, std::uint64_t offset) {
+  int err = 0;
+  std::uint64_t done = 0;
+  part.fill([&](std::string_view piece) {
+    if (err == 0) err = put(piece, offset + done);
+    done += piece.size();
+  });
+  if (done != part.size)
+    throw std::logic_error("write_in_rank_order: a part of " + std::to_string(done) +
+                           " bytes announced as " + std::to_string(part.size));
+  return err;
+}
+
+// Writes `part` into the existing file `path` from `offset` on; 0, or the errno of the
 // failure.
-int write_at(const std::string& path, const std::string& bytes, std::uint64_t offset) {
+int write_at(const std::string& path, const StreamedPart& part, std::uint64_t offset) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);  // never creates it
   if (fd < 0) return errno;
-  int err = io::write_all_at(fd, bytes, offset);
+  int err = 0;
+  try {
+    err = write_part([fd](std::string_view piece, std::uint64_t at) { return io::write_all_at(fd, piece, at); },
+                     part, offset);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
   if (::close(fd) != 0 && err == 0) err = errno;
   return err;
 }
@@ -33,6 +59,13 @@ int write_at(const std::string& path, const std::string& bytes, std::uint64_t of
 }  // namespace
 
 bool write_in_rank_order(std::span<const std::string> paths, std::span<const std::string> bytes) {
+  std::vector<StreamedPart> parts;
+  for (const std::string& b : bytes)
+    parts.push_back({b.size(), [&b](const std::function<void(std::string_view)>& out) { out(b); }});
+  return write_in_rank_order(paths, parts);
+}
+
+bool write_in_rank_order(std::span<const std::string> paths, std::span<const StreamedPart> bytes) {
   if (paths.size() != bytes.size())
     throw std::logic_error("write_in_rank_order: a part for every file");
   int rank = 0;
@@ -61,7 +94,7 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const std
   names = broadcast_from_root(names);
   // Where this rank's bytes go: after the ranks' before it, file by file.
   std::vector<std::uint64_t> sizes;
-  for (const std::string& b : bytes) sizes.push_back(b.size());
+  for (const StreamedPart& b : bytes) sizes.push_back(b.size);
   const std::vector<std::uint64_t> all = all_values(sizes);
   int err = 0;
   std::size_t at = 0, failed_file = 0;
@@ -76,11 +109,18 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const std
       err = write_at(temp, bytes[k], offset);
       continue;
     }
-    try {  // rank 0 through its own descriptor (the temporary may be read-only by mode)
-      files[k]->write_at(bytes[k], offset);
-    } catch (const std::system_error& e) {
-      err = e.code().value();
-    }
+    // Rank 0 through its own descriptor (the temporary may be read-only by mode).
+    io::AtomicFile& file = *files[k];
+    err = write_part(
+        [&file](std::string_view piece, std::uint64_t at) {
+          try {
+            file.write_at(piece, at);
+            return 0;
+          } catch (const std::system_error& e) {
+            return e.code().value();
+          }
+        },
+        bytes[k], offset);
   }
   // The last rank that failed, then its errno (every rank learns both).
   const int failed = max_over_ranks({err != 0 ? rank + 1 : 0, 0})[0];

@@ -19,8 +19,11 @@
 // for each other asleep (par/mpi_collect.hpp).
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 namespace pdr::par {
@@ -35,5 +38,15 @@ class RankFilesError : public std::system_error {
 // Writes file k as the concatenation of every rank's bytes[k], in rank order. True when
 // written; false on the ranks other than 0 when not (above).
 bool write_in_rank_order(std::span<const std::string> paths, std::span<const std::string> bytes);
+
+// A rank's part of a file, made as it is written: exactly `size` bytes, which `fill`
+// hands to the function it is given, in order and in pieces (a large part then never
+// stands whole in memory). A part whose pieces do not add up to `size` is an internal
+// error (std::logic_error, on that rank: the run is aborted).
+struct StreamedPart {
+  std::uint64_t size = 0;
+  std::function<void(const std::function<void(std::string_view)>&)> fill;
+};
+bool write_in_rank_order(std::span<const std::string> paths, std::span<const StreamedPart> parts);
 
 }  // namespace pdr::par

@@ -2,15 +2,18 @@
 //   - two files, each the ranks' parts in rank order (rank 1's part of the second one
 //     empty, rank 0's of the first one empty); rank 0 reads them back byte for byte and
 //     finds no temporary left beside them;
-//   - the same files again over the first ones (replaced whole);
+//   - the same files again over the first ones (replaced whole), then again with each
+//     rank's parts made as they are written, line by line (StreamedPart);
 //   - files in a directory that does not exist: rank 0 throws std::system_error, the
 //     others return false, and nothing is left behind.
 // Exit 0 on success; a failing check aborts the job.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -49,9 +52,19 @@ int main(int argc, char** argv) {
   }
   pdr::par::broadcast_from_root(0);  // the directory exists before anyone writes
   const std::vector<std::string> paths{(dir / "a.txt").string(), (dir / "b.txt").string()};
-  for (int round = 0; round < 2; ++round) {
-    if (!pdr::par::write_in_rank_order(paths, std::vector<std::string>{part(rank, 0, round),
-                                                                      part(rank, 1, round)}))
+  for (int round = 0; round < 3; ++round) {
+    const std::vector<std::string> texts{part(rank, 0, round), part(rank, 1, round)};
+    std::vector<pdr::par::StreamedPart> streamed;
+    for (const std::string& t : texts)
+      streamed.push_back({t.size(), [&t](const std::function<void(std::string_view)>& put) {
+                            for (std::size_t at = 0; at < t.size();) {  // a piece a line
+                              const std::size_t end = t.find('\n', at) + 1;
+                              put(std::string_view(t).substr(at, end - at));
+                              at = end;
+                            }
+                          }});
+    if (!(round < 2 ? pdr::par::write_in_rank_order(paths, texts)
+                    : pdr::par::write_in_rank_order(paths, streamed)))
       fail("rank " + std::to_string(rank) + ": round " + std::to_string(round) + " not written");
     if (rank != 0) continue;
     for (int file = 0; file < 2; ++file) {
