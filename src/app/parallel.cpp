@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <functional>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <span>
@@ -210,9 +210,8 @@ std::array<std::size_t, 3> write_parts(const std::string& prefix, const OwnPart&
   }
   // The .node and .face parts are formatted in memory (points' lengths are known only
   // once formatted; faces are few); the .ele part, most of the bytes, is formatted as it
-  // is written, in pieces of about 1 MiB, its length counted first from the digits: its
-  // text never stands whole in memory (on a virtual machine whose fresh pages each cost a
-  // fault, that is tens of milliseconds a rank).
+  // is written, in pieces of about 1 MiB, its length counted first from the digits, so
+  // that its text never stands whole in memory.
   std::array<io::TextSink, 2> out;  // .node, .face
   reserve_huge(out[0].text(), (own.points.size() + (w.rank == 0 ? m0.size() : 0)) * 72 + 256);
   const bool markers = total[2] > 0;  // as the joined mesh's face_markers (one per face)
@@ -236,22 +235,23 @@ std::array<std::size_t, 3> write_parts(const std::string& prefix, const OwnPart&
       std::filesystem::create_directories(parent, ignored);
   }
   const std::vector<std::string> paths = io::output_paths(prefix, io::MeshFormat::TetGen);
-  const auto whole = [](const std::string& text) {
-    return par::StreamedPart{text.size(), [&text](const std::function<void(std::string_view)>& put) { put(text); }};
+  using Put = std::function<void(std::string_view)>;
+  const auto whole = [](const std::string* text) {
+    return par::StreamedPart{text->size(), [text](const Put& put) { put(*text); }};
   };
   const std::array<par::StreamedPart, 3> parts{
-      whole(out[0].text()),
+      whole(&out[0].text()),
       par::StreamedPart{
           ele_head.text().size() + io::tetgen_lines::eles_bytes(own.mesh.tets, first[1], {}) +
               ele_tail.text().size(),
-          [&](const std::function<void(std::string_view)>& put) {
+          [&](const Put& put) {
             put(ele_head.text());
             io::TextSink lines(put);
             io::tetgen_lines::eles(lines, own.mesh.tets, first[1], {});
             lines.flush();
             put(ele_tail.text());
           }},
-      whole(out[1].text())};
+      whole(&out[1].text())};
   par::write_in_rank_order(paths, parts);  // false elsewhere than rank 0: rank 0 ends the run
   return total;
 }

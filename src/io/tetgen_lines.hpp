@@ -32,10 +32,10 @@ void faces(TextSink& out, std::span<const Tri> faces, std::size_t first,
 // The last line of every file.
 void tail(TextSink& out);
 
-// The exact length in bytes of what eles() and faces() write for the same arguments, from
-// the numbers' digits (a part of a file written at its offset before it is formatted:
-// par/rank_files.hpp streams it).
-std::uint64_t eles_bytes(std::span<const Tet> tets, std::size_t first, std::span<const int> regions);
-std::uint64_t faces_bytes(std::span<const Tri> faces, std::size_t first, std::span<const int> markers);
+// The exact length in bytes of what eles() writes for the same arguments, from the
+// numbers' digits (a part of a file written at its offset as it is formatted:
+// par/rank_files.hpp, StreamedPart).
+std::uint64_t eles_bytes(std::span<const Tet> tets, std::size_t first,
+                         std::span<const int> regions);
 
 }  // namespace pdr::io::tetgen_lines

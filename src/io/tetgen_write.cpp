@@ -75,27 +75,19 @@ unsigned digits(std::uint64_t v) {
 // The characters std::to_chars writes for v (a minus sign, then the digits).
 unsigned int_chars(int v) {
   const std::int64_t w = v;
-  return w < 0 ? 1 + digits(static_cast<std::uint64_t>(-w)) : digits(static_cast<std::uint64_t>(w));
+  return w < 0 ? 1 + digits(static_cast<std::uint64_t>(-w))
+               : digits(static_cast<std::uint64_t>(w));
 }
 
 }  // namespace
 
-std::uint64_t eles_bytes(std::span<const Tet> tets, std::size_t first, std::span<const int> regions) {
+std::uint64_t eles_bytes(std::span<const Tet> tets, std::size_t first,
+                         std::span<const int> regions) {
   std::uint64_t n = 0;
   for (std::size_t i = 0; i < tets.size(); ++i) {
     n += digits(first + i + 1) + 1;  // the number and the newline
     for (std::uint32_t v : tets[i]) n += 1 + digits(std::uint64_t{v} + 1);
     if (!regions.empty()) n += 1 + int_chars(regions[i]);
-  }
-  return n;
-}
-
-std::uint64_t faces_bytes(std::span<const Tri> faces, std::size_t first, std::span<const int> markers) {
-  std::uint64_t n = 0;
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    n += digits(first + i + 1) + 1;
-    for (std::uint32_t v : faces[i]) n += 1 + digits(std::uint64_t{v} + 1);
-    if (!markers.empty()) n += 1 + int_chars(markers[i]);
   }
   return n;
 }

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -24,6 +25,7 @@ class TextSink {
   // Into `out`, piece by piece, in order.
   explicit TextSink(std::function<void(std::string_view)> out)
       : out_(std::move(out)), limit_(kChunk) {
+    if (!out_) throw std::invalid_argument("TextSink: no function to take the text");
     buf_.reserve(kChunk + 256);
   }
   // Into memory: everything stays in text() (flush() does nothing).

@@ -105,10 +105,10 @@ class InsertionActor {
     auto now = std::chrono::steady_clock::now();
     return step(now);
   }
-  // The same, for a loop that chains its clock readings (a reading costs tens of
-  // nanoseconds, a step a few microseconds): `now`, a reading taken at or after the
-  // previous step's end, is this step's start; it is set to the step's last reading,
-  // taken at its end.
+  // The same, for a loop that chains its clock readings (two a step): `now` is this
+  // step's start, the previous step's last reading or a fresh one; it is set to this
+  // step's last reading, at the end of its poll or of its work, before its termination
+  // step (whose time the next step's poll then counts).
   bool step(std::chrono::steady_clock::time_point& now);
 
   const Submesh& submesh() const { return sub_; }

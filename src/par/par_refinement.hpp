@@ -32,7 +32,8 @@ namespace pdr::par {
 // One rank's figures of the parallel phase (fixed size: gathered as bytes).
 struct RankFigures {
   double seconds = 0;          // from the start of the loop to termination
-  double busy_seconds = 0;     // in iterations that did work
+  double busy_seconds = 0;     // in steps that did work, each from the previous step's
+                               // last reading (InsertionActor::step) to its own
   InsertionStats steps;        // commits, setbacks, rounds, fetches, migrated tets, ...
   DeferCounts deferred;        // steps left to the sequential completion, by reason
   std::uint64_t messages_sent = 0, messages_received = 0, bytes_sent = 0;

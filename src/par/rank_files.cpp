@@ -30,6 +30,9 @@ int write_part(const PutAt& put, const StreamedPart& part, std::uint64_t offset)
   int err = 0;
   std::uint64_t done = 0;
   part.fill([&](std::string_view piece) {
+    if (done + piece.size() > part.size)  // before it reaches the next rank's bytes
+      throw std::logic_error("write_in_rank_order: a part longer than its announced " +
+                             std::to_string(part.size) + " bytes");
     if (err == 0) err = put(piece, offset + done);
     done += piece.size();
   });
@@ -62,11 +65,11 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const std
   std::vector<StreamedPart> parts;
   for (const std::string& b : bytes)
     parts.push_back({b.size(), [&b](const std::function<void(std::string_view)>& out) { out(b); }});
-  return write_in_rank_order(paths, parts);
+  return write_in_rank_order(paths, std::span<const StreamedPart>(parts));
 }
 
-bool write_in_rank_order(std::span<const std::string> paths, std::span<const StreamedPart> bytes) {
-  if (paths.size() != bytes.size())
+bool write_in_rank_order(std::span<const std::string> paths, std::span<const StreamedPart> parts) {
+  if (paths.size() != parts.size())
     throw std::logic_error("write_in_rank_order: a part for every file");
   int rank = 0;
   if (MPI_Comm_rank(MPI_COMM_WORLD, &rank) != MPI_SUCCESS)
@@ -94,7 +97,7 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const Str
   names = broadcast_from_root(names);
   // Where this rank's bytes go: after the ranks' before it, file by file.
   std::vector<std::uint64_t> sizes;
-  for (const StreamedPart& b : bytes) sizes.push_back(b.size);
+  for (const StreamedPart& part : parts) sizes.push_back(part.size);
   const std::vector<std::uint64_t> all = all_values(sizes);
   int err = 0;
   std::size_t at = 0, failed_file = 0;
@@ -106,7 +109,7 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const Str
     for (int r = 0; r < rank; ++r) offset += all[static_cast<std::size_t>(r) * paths.size() + k];
     failed_file = k;
     if (rank != 0) {
-      err = write_at(temp, bytes[k], offset);
+      err = write_at(temp, parts[k], offset);
       continue;
     }
     // Rank 0 through its own descriptor (the temporary may be read-only by mode).
@@ -120,7 +123,7 @@ bool write_in_rank_order(std::span<const std::string> paths, std::span<const Str
             return e.code().value();
           }
         },
-        bytes[k], offset);
+        parts[k], offset);
   }
   // The last rank that failed, then its errno (every rank learns both).
   const int failed = max_over_ranks({err != 0 ? rank + 1 : 0, 0})[0];

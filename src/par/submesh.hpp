@@ -74,8 +74,7 @@ inline constexpr std::uint32_t kNoLabel = 0xFFFFFFFFu;  // an edge or face witho
 // A face by the global ids of its vertices, sorted (orientation is not part of the key).
 struct FaceKey {
   std::array<Gid, 3> v{};
-  // Three compares, inlined (the defaulted one calls memcmp: a call per probe of
-  // proxy_at_, the migrations' hottest lookup).
+  // Three compares, inlined.
   bool operator==(const FaceKey& o) const {
     return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2];
   }

@@ -2,7 +2,11 @@
 // comments, 10-node tets, -nn and -o2 face lines) and .node/.poly/.smesh domains.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -90,33 +94,27 @@ TEST(TetgenMesh, LinesInPartsAreTheWholeWritersFiles) {
 }
 
 // The lengths counted from the digits are the lengths written, at every number of digits
-// (vertex numbers up to 2^32, line numbers past it, negative and positive markers), and a
-// sink that hands its text to a function in pieces hands it all, in order.
+// (vertex numbers up to 2^32 - 1, line numbers past 2^32, negative and positive regions),
+// and a sink that hands its text to a function in pieces hands it all, in order.
 TEST(TetgenMesh, CountedLengthsAreTheWrittenOnes) {
   std::vector<Tet> tets;
-  std::vector<Tri> tris;
-  std::vector<int> marks;
+  std::vector<int> regions;
   std::uint64_t p10 = 1;
   for (int d = 0; d <= 10; ++d, p10 *= 10)
     for (const std::uint64_t v : {p10 - 2, p10 - 1, p10, p10 + 1}) {
       const auto u = static_cast<std::uint32_t>(std::min<std::uint64_t>(v, 0xFFFFFFFEu));
       tets.push_back({u, u / 3, 0, 0xFFFFFFFEu});
-      tris.push_back({u, 7, u / 7});
       const auto m = static_cast<int>(std::min<std::uint64_t>(v, 0x7FFFFFFF));
-      marks.push_back(d % 2 == 0 ? m : -m);
+      regions.push_back(d % 2 == 0 ? m : -m);
     }
-  marks.push_back(std::numeric_limits<int>::min());
-  tets.push_back({1, 2, 3, 4});
-  tris.push_back({1, 2, 3});
+  regions.back() = std::numeric_limits<int>::min();
   for (const std::size_t first : {std::size_t{0}, std::size_t{9}, std::size_t{99'999'999'990},
                                   std::size_t{1} << 40}) {
-    for (const bool extra : {false, true}) {
-      const std::span<const int> m = extra ? std::span<const int>(marks) : std::span<const int>();
-      TextSink a, b;
-      tetgen_lines::eles(a, tets, first, m);
-      tetgen_lines::faces(b, tris, first, m);
-      EXPECT_EQ(tetgen_lines::eles_bytes(tets, first, m), a.text().size()) << first;
-      EXPECT_EQ(tetgen_lines::faces_bytes(tris, first, m), b.text().size()) << first;
+    for (const bool with_regions : {false, true}) {
+      const std::span<const int> r = with_regions ? std::span<const int>(regions) : std::span<const int>();
+      TextSink a;
+      tetgen_lines::eles(a, tets, first, r);
+      EXPECT_EQ(tetgen_lines::eles_bytes(tets, first, r), a.text().size()) << first;
     }
   }
   std::vector<Tet> many(300'000, Tet{123456, 7, 89, 1000000});  // several 1 MiB pieces
@@ -133,6 +131,7 @@ TEST(TetgenMesh, CountedLengthsAreTheWrittenOnes) {
   EXPECT_GT(pieces, 2u);
   EXPECT_EQ(joined, whole.text());
   EXPECT_EQ(tetgen_lines::eles_bytes(many, 0, {}), joined.size());
+  EXPECT_THROW(TextSink(std::function<void(std::string_view)>()), std::invalid_argument);
 }
 
 TEST(TetgenMesh, FaceFileIsOptional) {

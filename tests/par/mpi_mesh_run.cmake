@@ -26,6 +26,33 @@
 #                         either way `pdr check OUT --domain DOMAIN --ratio 2` passes on
 #                         the files, which hold the summary's counts
 cmake_minimum_required(VERSION 3.25)  # every policy NEW (no CMP0053 warnings on XML text)
+
+# A JSON number of seconds (2.67, 3.1e-05, 0) as whole nanoseconds, truncated: CMake's
+# arithmetic is on integers.
+function(seconds_to_ns text out)
+  if(NOT text MATCHES "^([0-9]+)(\\.([0-9]*))?([eE]([-+]?[0-9]+))?$")
+    message(FATAL_ERROR "not a number of seconds: ${text}")
+  endif()
+  set(digits "${CMAKE_MATCH_1}${CMAKE_MATCH_3}")
+  string(LENGTH "${CMAKE_MATCH_3}" fraction)
+  set(exponent 0)
+  if(NOT "${CMAKE_MATCH_5}" STREQUAL "")
+    math(EXPR exponent "${CMAKE_MATCH_5}")
+  endif()
+  math(EXPR shift "${exponent} + 9 - ${fraction}")
+  string(LENGTH "${digits}" length)
+  math(EXPR keep "${length} + ${shift}")  # the digits kept when shift < 0
+  if(shift GREATER_EQUAL 0)
+    string(REPEAT "0" ${shift} zeros)
+    string(APPEND digits "${zeros}")
+  elseif(keep LESS_EQUAL 0)
+    set(digits 0)
+  else()
+    string(SUBSTRING "${digits}" 0 ${keep} digits)
+  endif()
+  string(REGEX REPLACE "^0+([0-9])" "\\1" digits "${digits}")
+  set(${out} ${digits} PARENT_SCOPE)
+endfunction()
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 set(run_out ${OUT})
 if(WANT_UNWRITABLE)
@@ -75,6 +102,26 @@ if(WANT_PARALLEL)
       message(FATAL_ERROR "table1 of rank ${r}: ${commits} commits, cavities ${local} + ${dist} s, tolerance ${tol}\n${out}")
     endif()
     math(EXPR all_commits "${all_commits} + ${commits}")
+    # Table 1's parts of the rank's loop are disjoint (docs/parallel.md): with its busy
+    # time, none adds up past the loop's seconds (1 µs of slack for the sums' rounding).
+    string(JSON t1 GET "${out}" parallel per_rank ${r} table1)
+    set(parts_ns 0)
+    foreach(path "completed_cavity_seconds;local" "completed_cavity_seconds;distributed"
+                 "masked_seconds;local" "masked_seconds;distributed" "setback_seconds"
+                 "served_seconds" "other_seconds" "poll_seconds")
+      string(JSON v GET "${t1}" ${path})
+      seconds_to_ns("${v}" ns)
+      math(EXPR parts_ns "${parts_ns} + ${ns}")
+    endforeach()
+    string(JSON seconds GET "${out}" parallel per_rank ${r} seconds)
+    string(JSON busy GET "${out}" parallel per_rank ${r} busy_seconds)
+    seconds_to_ns("${seconds}" seconds_ns)
+    seconds_to_ns("${busy}" busy_ns)
+    math(EXPR limit_ns "${seconds_ns} + 1000")
+    if(parts_ns GREATER limit_ns OR busy_ns GREATER limit_ns)
+      message(FATAL_ERROR "table1 of rank ${r}: parts ${parts_ns} ns, busy ${busy_ns} ns, "
+                          "the loop ${seconds_ns} ns\n${out}")
+    endif()
   endforeach()
   if(all_commits EQUAL 0)
     message(FATAL_ERROR "no rank committed a cavity\n${out}")

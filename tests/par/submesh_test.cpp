@@ -7,6 +7,9 @@
 // every edge and face of a tet held has the label of the surface mesh D (M4).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+
 #include "par/par_world.hpp"
 #include "par/refinement_rules.hpp"
 
@@ -157,4 +160,3 @@ TEST(Submesh, FaceKeyIsTheSortedIds) {
 
 }  // namespace
 }  // namespace pdr::par
-
