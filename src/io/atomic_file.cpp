@@ -5,8 +5,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <system_error>
+#include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace pdr::io {
 
@@ -23,6 +26,34 @@ std::string temp_name_for(const std::string& path, unsigned attempt) {
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   return dir + "." + name + ".tmp-" + std::to_string(::getpid()) + "-" +
          std::to_string(counter.fetch_add(1) + attempt);
+}
+
+// A descriptor of the file that a rename onto `path` would replace, when freeing it could
+// cost anything: a regular file with no other link (a link elsewhere keeps it alive
+// anyway). -1 otherwise. Never blocks (O_NONBLOCK: a FIFO there) and never follows a
+// symbolic link (the rename replaces the link itself).
+int hold_replaced(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return -1;
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1 && st.st_size > 0)
+    return fd;
+  ::close(fd);
+  return -1;
+}
+
+// Closes the held files on a detached thread (there the kernel frees them), or here when
+// no thread can be started. The thread makes no call but close(2): it may still run when
+// the process exits, which then frees what is left.
+void release(std::vector<int> held) {
+  if (held.empty()) return;
+  try {
+    std::thread([held] {
+      for (const int fd : held) ::close(fd);
+    }).detach();
+  } catch (const std::system_error&) {
+    for (const int fd : held) ::close(fd);
+  }
 }
 
 }  // namespace
@@ -86,16 +117,34 @@ void AtomicFile::close() {
 }
 
 void AtomicFile::commit() {
+  std::vector<int> held;
+  commit(held);
+  release(std::move(held));
+}
+
+void AtomicFile::commit(std::vector<int>& held) {
   close();
   if (committed_) return;
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0)
-    throw_errno(errno, "cannot rename the finished temporary file onto '" + path_ + "'");
+  const int old = hold_replaced(path_);
+  if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const int err = errno;
+    if (old >= 0) ::close(old);
+    throw_errno(err, "cannot rename the finished temporary file onto '" + path_ + "'");
+  }
   committed_ = true;
+  if (old >= 0) held.push_back(old);
 }
 
 void commit_all(std::span<AtomicFile* const> files) {
   for (AtomicFile* f : files) f->close();
-  for (AtomicFile* f : files) f->commit();
+  std::vector<int> held;
+  try {
+    for (AtomicFile* f : files) f->commit(held);
+  } catch (...) {
+    release(std::move(held));
+    throw;
+  }
+  release(std::move(held));
 }
 
 }  // namespace pdr::io

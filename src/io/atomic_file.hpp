@@ -9,6 +9,14 @@
 //
 // Temporary names are "<dir>/.<name>.tmp-<pid>-<n>"; they are created with O_EXCL and mode
 // 0666 (less the umask), so the final file has ordinary permissions.
+//
+// Replacing an older file: the kernel frees the old file's blocks and cached pages when
+// its last link and its last descriptor are gone, which for a plain rename is inside
+// rename(2) (measured: 0.09 s for a 180 MB .ele written a moment before, most of it
+// dropping its cached pages). A commit therefore opens the old file (a regular file with
+// no other link) before the rename and closes it afterwards on a thread of its own, so
+// that freeing it overlaps what the run does next. The rename is as atomic as before; a
+// reader that opened the old file keeps reading it, as before.
 // Errors are std::system_error naming the path.
 #pragma once
 
@@ -16,6 +24,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pdr::io {
 
@@ -40,6 +49,10 @@ class AtomicFile {
   void commit();
 
  private:
+  friend void commit_all(std::span<AtomicFile* const> files);
+  // commit(), the replaced file's descriptor (if held) added to `held` for the caller to
+  // release.
+  void commit(std::vector<int>& held);
   std::string path_;
   std::string temp_;
   int fd_ = -1;
