@@ -5,7 +5,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <fcntl.h>
+#include <linux/magic.h>
 #include <sys/stat.h>
+#include <sys/vfs.h>
 #include <system_error>
 #include <thread>
 #include <unistd.h>
@@ -28,32 +30,39 @@ std::string temp_name_for(const std::string& path, unsigned attempt) {
          std::to_string(counter.fetch_add(1) + attempt);
 }
 
-// A descriptor of the file that a rename onto `path` would replace, when freeing it could
-// cost anything: a regular file with no other link (a link elsewhere keeps it alive
-// anyway). -1 otherwise. Never blocks (O_NONBLOCK: a FIFO there) and never follows a
-// symbolic link (the rename replaces the link itself).
+// Holding a file smaller than this saves less than the thread costs.
+constexpr std::uint64_t kHeldBytes = std::uint64_t{1} << 20;
+
+// A descriptor of the file that a rename onto `path` would replace, when holding it is
+// worth a thread and harmless (replaced_file_is_held). O_PATH: the file is not opened for
+// reading (no device opened, no FIFO peer woken, no lease broken, no read permission
+// needed); O_NOFOLLOW: a symbolic link is replaced itself. -1 otherwise.
 int hold_replaced(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
+  const int fd = ::open(path.c_str(), O_PATH | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) return -1;
   struct stat st {};
-  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1 && st.st_size > 0)
+  struct statfs fs {};
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1 &&
+      static_cast<std::uint64_t>(st.st_blocks) * 512 >= kHeldBytes && ::fstatfs(fd, &fs) == 0 &&
+      local_file_system(static_cast<std::uint64_t>(fs.f_type)))
     return fd;
   ::close(fd);
   return -1;
 }
 
 // Closes the held files on a detached thread (there the kernel frees them), or here when
-// no thread can be started. The thread makes no call but close(2): it may still run when
-// the process exits, which then frees what is left.
-void release(std::vector<int> held) {
+// no thread can be started. The thread closes descriptors and ends; the process's exit
+// waits for a close in progress, and frees what is left.
+void release(std::vector<int>& held) noexcept {
   if (held.empty()) return;
   try {
-    std::thread([held] {
-      for (const int fd : held) ::close(fd);
+    std::thread([fds = held] {
+      for (const int fd : fds) ::close(fd);
     }).detach();
-  } catch (const std::system_error&) {
+  } catch (...) {  // no thread, or no memory for its copy
     for (const int fd : held) ::close(fd);
   }
+  held.clear();
 }
 
 }  // namespace
@@ -116,10 +125,36 @@ void AtomicFile::close() {
   if (::close(fd) != 0) throw_errno(errno, "cannot finish writing '" + path_ + "'");
 }
 
+bool local_file_system(std::uint64_t magic) {
+  switch (magic) {
+    case EXT4_SUPER_MAGIC:  // ext2, ext3 and ext4
+    case XFS_SUPER_MAGIC:
+    case BTRFS_SUPER_MAGIC:
+    case TMPFS_MAGIC:
+    case OVERLAYFS_SUPER_MAGIC:  // containers: the upper layer is one of the above
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool replaced_file_is_held(const std::string& path) {
+  const int fd = hold_replaced(path);
+  if (fd < 0) return false;
+  ::close(fd);
+  return true;
+}
+
 void AtomicFile::commit() {
   std::vector<int> held;
-  commit(held);
-  release(std::move(held));
+  held.reserve(1);
+  try {
+    commit(held);
+  } catch (...) {
+    release(held);
+    throw;
+  }
+  release(held);
 }
 
 void AtomicFile::commit(std::vector<int>& held) {
@@ -132,19 +167,20 @@ void AtomicFile::commit(std::vector<int>& held) {
     throw_errno(err, "cannot rename the finished temporary file onto '" + path_ + "'");
   }
   committed_ = true;
-  if (old >= 0) held.push_back(old);
+  if (old >= 0) held.push_back(old);  // no allocation: the caller reserved room
 }
 
 void commit_all(std::span<AtomicFile* const> files) {
   for (AtomicFile* f : files) f->close();
   std::vector<int> held;
+  held.reserve(files.size());
   try {
     for (AtomicFile* f : files) f->commit(held);
   } catch (...) {
-    release(std::move(held));
+    release(held);
     throw;
   }
-  release(std::move(held));
+  release(held);
 }
 
 }  // namespace pdr::io

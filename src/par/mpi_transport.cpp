@@ -32,7 +32,7 @@ const char* single_host_pml() {
 MpiSession::MpiSession(int* argc, char*** argv) {
   if (const char* pml = single_host_pml()) setenv("OMPI_MCA_pml", pml, 0);
   int provided = 0;
-  check(MPI_Init_thread(argc, argv, MPI_THREAD_SINGLE, &provided), "MPI_Init_thread");
+  check(MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);

@@ -10,6 +10,7 @@
 #include <thread>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 #include <filesystem>
 #include <system_error>
@@ -89,23 +90,36 @@ TEST(Atomic, GroupCommitsAllOrNone) {
   EXPECT_EQ(dir.entries(), (Names{"x.ele", "x.node"}));
 }
 
-// The descriptors open in this process, from /proc (-1 where there is none).
-int open_descriptors() {
+// The descriptors open in this process on files under `dir` (a replaced file shows as
+// "<path> (deleted)"), from /proc; -1 where there is no /proc.
+int descriptors_under(const std::string& dir) {
   std::error_code ec;
   int n = 0;
   for (auto it = std::filesystem::directory_iterator("/proc/self/fd", ec);
-       !ec && it != std::filesystem::directory_iterator(); it.increment(ec))
-    ++n;
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    std::error_code link_ec;
+    const std::string target = std::filesystem::read_symlink(it->path(), link_ec).string();
+    if (!link_ec && target.rfind(dir + "/", 0) == 0) ++n;
+  }
   return ec ? -1 : n;
 }
 
-// A commit over an older file holds it open across the rename and closes it on a thread
-// of its own: the target is replaced as before, and the descriptor does not leak.
+bool on_local_file_system(const std::string& dir) {
+  struct statfs fs {};
+  return ::statfs(dir.c_str(), &fs) == 0 && local_file_system(static_cast<std::uint64_t>(fs.f_type));
+}
+
+// A commit over an older large file holds it across the rename and closes it on a thread
+// of its own: the target is replaced as before, and no descriptor is left open.
 TEST(Atomic, ReplacedFileIsReleased) {
   ScratchDir dir;
-  write_text(dir / "x.node", std::string(1 << 20, 'a'));
-  write_text(dir / "x.ele", "old ele");
-  const int before = open_descriptors();
+  const std::string big(2 << 20, 'a');
+  write_text(dir / "x.node", big);
+  write_text(dir / "x.ele", big);
+  if (on_local_file_system(dir.str())) {
+    EXPECT_TRUE(replaced_file_is_held(dir / "x.node"));
+    EXPECT_TRUE(replaced_file_is_held(dir / "x.ele"));
+  }
   {
     AtomicFile a(dir / "x.node"), b(dir / "x.ele");
     a.write("new node");
@@ -113,20 +127,43 @@ TEST(Atomic, ReplacedFileIsReleased) {
     AtomicFile* both[] = {&a, &b};
     commit_all(both);
   }
+  write_text(dir / "y", big);
   {
-    AtomicFile c(dir / "x.node");
-    c.write("newer node");
+    AtomicFile c(dir / "y");
+    c.write("new y");
     c.commit();
   }
-  EXPECT_EQ(read_text(dir / "x.node"), "newer node");
+  EXPECT_EQ(read_text(dir / "x.node"), "new node");
   EXPECT_EQ(read_text(dir / "x.ele"), "new ele");
-  EXPECT_EQ(dir.entries(), (Names{"x.ele", "x.node"}));
-  if (before < 0) GTEST_SKIP() << "no /proc/self/fd";
+  EXPECT_EQ(read_text(dir / "y"), "new y");
+  EXPECT_EQ(dir.entries(), (Names{"x.ele", "x.node", "y"}));
+  if (descriptors_under(dir.str()) < 0) GTEST_SKIP() << "no /proc/self/fd";
   // The closing thread runs on its own: wait for it (a leak fails after 10 s).
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (open_descriptors() > before && std::chrono::steady_clock::now() < deadline)
+  while (descriptors_under(dir.str()) > 0 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  EXPECT_EQ(open_descriptors(), before);
+  EXPECT_EQ(descriptors_under(dir.str()), 0);
+}
+
+// Held only where holding is harmless and worth a thread: a lone regular file of at
+// least 1 MiB on a local file system; not a small file, a file with another link, a
+// symbolic link (replaced itself), a FIFO or a directory.
+TEST(Atomic, OnlyALoneLargeLocalFileIsHeld) {
+  ScratchDir dir;
+  const std::string big(2 << 20, 'b');
+  write_text(dir / "small", "small");
+  write_text(dir / "shared", big);
+  ASSERT_EQ(::link((dir / "shared").c_str(), (dir / "other").c_str()), 0);
+  write_text(dir / "real", big);
+  ASSERT_EQ(::symlink("real", (dir / "link").c_str()), 0);
+  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
+  std::filesystem::create_directory(dir / "sub");
+  for (const char* name : {"small", "shared", "link", "fifo", "sub", "missing"})
+    EXPECT_FALSE(replaced_file_is_held(dir / name)) << name;
+  EXPECT_EQ(replaced_file_is_held(dir / "real"), on_local_file_system(dir.str()));
+  EXPECT_TRUE(local_file_system(0xEF53));                 // ext4
+  EXPECT_FALSE(local_file_system(0x6969));                // NFS
+  EXPECT_FALSE(local_file_system(0x65735546));            // FUSE
 }
 
 // What is not a lone regular file is replaced without being held: a FIFO (opening it
