@@ -22,8 +22,9 @@ namespace pdr::par {
 
 // MPI_Init / MPI_Finalize around a scope (MPI_THREAD_FUNNELED: a rank has other threads,
 // its writers', its checker's, the closer of replaced files, but only the thread that
-// started MPI calls it). A transport must not outlive it. A rank that fails must call abort() (MPI_Abort) rather
-// than unwind into MPI_Finalize, which would wait for peers that never come.
+// started MPI calls it). A transport must not outlive it. A rank that fails must call
+// abort() (MPI_Abort) rather than unwind into MPI_Finalize, which would wait for peers
+// that never come.
 class MpiSession {
  public:
   MpiSession(int* argc, char*** argv);
