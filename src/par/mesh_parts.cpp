@@ -15,7 +15,9 @@ namespace {
 
 // Vertex v of s was made in the phase on ∂Ω.
 bool made_on_d(const Submesh& s, VertexId v) {
-  return made_vertex(s.gid(v)).has_value() && RefinementRules::made_on_d(s.tag(v));
+  // The tag first: a byte a vertex, where the global id is eight (most vertices are not
+  // on ∂Ω, and their global ids are then not read).
+  return RefinementRules::made_on_d(s.tag(v)) && made_vertex(s.gid(v)).has_value();
 }
 
 // The facet of face f of real tet t (its label), or kNoLabel.

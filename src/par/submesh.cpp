@@ -25,15 +25,6 @@ std::size_t GidHash::operator()(Gid g) const {
   return static_cast<std::size_t>(g ^ (g >> 31));
 }
 
-std::size_t FaceKeyHash::operator()(const FaceKey& k) const {
-  std::uint64_t h = 0x9E3779B97F4A7C15ull;
-  for (const Gid g : k.v) {
-    h ^= g + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    h *= 0xBF58476D1CE4E5B9ull;
-  }
-  return static_cast<std::size_t>(h ^ (h >> 31));
-}
-
 namespace {
 
 void sort3(VertexId& a, VertexId& b, VertexId& c) {
@@ -238,12 +229,16 @@ TetId Submesh::add_proxy(TetId t, int f, const Side& side) {
   store_.link(half_face(t, f), half_face(p, 3));
   side_[p] = side;
   ++proxies_;
-  proxy_at_[key_of(p, 3)] = p;
   return p;
 }
 
+TetId Submesh::proxy_on(TetId t, const FaceKey& k) const {
+  for (int f = 0; f < 4; ++f)
+    if (const TetId u = store_.neighbour(t, f); store_.is_proxy(u) && key_of(t, f) == k) return u;
+  return kNoTet;
+}
+
 void Submesh::drop_proxy(TetId proxy) {
-  proxy_at_.erase(key_of(proxy, 3));
   side_.erase(proxy);
   --proxies_;
   store_.destroy(proxy);
@@ -370,7 +365,6 @@ std::vector<TetId> Submesh::give(const Migration& m) {
     const TetId t = store_.create(v[0], v[1], v[2], v[3]);
     record_tet(t, r.gid, r.epoch, r.inside);
     slot_[t].exposed = 1;  // its old holder, and proxies elsewhere, may name it
-    moved_.erase(r.gid);
     ids.push_back(t);
   }
   for (const EdgeLabel& l : m.edge_labels)
@@ -388,9 +382,10 @@ std::vector<TetId> Submesh::give(const Migration& m) {
         internal.emplace_back(k, half_face(t, f));
         continue;
       }
-      if (const TetId* at = proxy_at_.find(k)) {
-        // The other side is here: glue to the tet behind the proxy.
-        const TetId proxy = *at;
+      // The other side is here when the tet across is (M2: its face is closed by a
+      // proxy): glue to it.
+      const TetId x = find_tet(across.tet);
+      if (const TetId proxy = x == kNoTet ? kNoTet : proxy_on(x, k); proxy != kNoTet) {
         const HalfFace back = store_.opposite(proxy, 3);
         drop_proxy(proxy);
         store_.link(half_face(t, f), back);
@@ -403,8 +398,10 @@ std::vector<TetId> Submesh::give(const Migration& m) {
       if (const Claim* gone = moved_.find(across.tet)) claim(p, *gone);
     }
   }
-  std::sort(internal.begin(), internal.end(),
-            [](const auto& a, const auto& b) { return a.first.v < b.first.v; });
+  std::sort(internal.begin(), internal.end(), [](const auto& a, const auto& b) {
+    const FaceKey &x = a.first, &y = b.first;  // lexicographic, without a three-way compare
+    return x.v[0] != y.v[0] ? x.v[0] < y.v[0] : x.v[1] != y.v[1] ? x.v[1] < y.v[1] : x.v[2] < y.v[2];
+  });
   for (std::size_t i = 0; i < internal.size(); i += 2) {
     if (i + 1 == internal.size() || !(internal[i].first == internal[i + 1].first) ||
         (i + 2 < internal.size() && internal[i + 2].first == internal[i].first))
@@ -433,12 +430,12 @@ VertexId Submesh::insert(const Cavity& c, std::uint8_t inside, std::uint8_t tag)
 }
 
 bool Submesh::relink(Relink& r) {
-  if (find_tet(r.about) != kNoTet) {
+  if (const TetId about = find_tet(r.about); about != kNoTet) {
     // A proxy on that face, unless the moved tet is here too (then the face is inside),
     // and only one that still names the moved tet: after a commit, a new tet may have
     // the same face.
-    if (const TetId* at = proxy_at_.find(r.face); at != nullptr && proxy_side(*at).tet == r.tet)
-      claim(*at, r.claim);
+    if (const TetId p = proxy_on(about, r.face); p != kNoTet && proxy_side(p).tet == r.tet)
+      claim(p, r.claim);
     return true;
   }
   if (const auto next = moved(r.about, r.about_epoch)) {
@@ -452,6 +449,7 @@ bool Submesh::relink(Relink& r) {
 }
 
 std::optional<Claim> Submesh::moved(Gid g, std::uint32_t after) const {
+  if (find_tet(g) != kNoTet) return std::nullopt;
   if (const Claim* gone = moved_.find(g); gone != nullptr && gone->epoch > after) return *gone;
   return std::nullopt;
 }
@@ -465,6 +463,7 @@ std::size_t Submesh::waiting_relinks() const {
 std::vector<std::string> Submesh::check() const {
   std::vector<std::string> out = store_.check_topology();
   std::size_t proxies = 0, foreign = 0;
+  std::vector<FaceKey> faces;  // the proxies' faces: each closed by one proxy
   for (TetId t = 0; t < store_.slots(); ++t) {
     if (!store_.is_alive(t)) continue;
     if (!store_.is_proxy(t)) {
@@ -475,19 +474,22 @@ std::vector<std::string> Submesh::check() const {
       continue;
     }
     ++proxies;
-    const TetId* at = proxy_at_.find(key_of(t, 3));
+    faces.push_back(key_of(t, 3));
     const Side* side = side_.find(t);
-    if (at == nullptr || *at != t || side == nullptr || side->tet == kNoGid)
-      out.push_back("submesh.proxy-index: proxy " + std::to_string(t) + " of submesh " +
-                    std::to_string(id_) + " is not indexed by its face");
+    const TetId back = store_.neighbour(t, 3);
+    if (side == nullptr || side->tet == kNoGid || store_.is_proxy(back) ||
+        proxy_on(back, faces.back()) != t)
+      out.push_back("submesh.proxy: proxy " + std::to_string(t) + " of submesh " +
+                    std::to_string(id_) + " has no side, or is not found from its tet");
   }
-  if (proxies != proxies_ || proxies != proxy_at_.size() || proxies != side_.size() ||
-      foreign != tet_at_.size())
+  std::sort(faces.begin(), faces.end(), [](const FaceKey& a, const FaceKey& b) { return a.v < b.v; });
+  if (std::adjacent_find(faces.begin(), faces.end()) != faces.end())
+    out.push_back("submesh.proxy: two proxies of submesh " + std::to_string(id_) +
+                  " close the same face");
+  if (proxies != proxies_ || proxies != side_.size() || foreign != tet_at_.size())
     out.push_back("submesh.index: " + std::to_string(proxies) + " proxies, " +
-                  std::to_string(proxies_) + " counted, " +
-                  std::to_string(proxy_at_.size()) + " indexed faces, " +
-                  std::to_string(side_.size()) + " sides, " +
-                  std::to_string(tet_at_.size()) + " indexed tets");
+                  std::to_string(proxies_) + " counted, " + std::to_string(side_.size()) +
+                  " sides, " + std::to_string(tet_at_.size()) + " indexed tets");
   return out;
 }
 

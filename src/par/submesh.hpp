@@ -80,9 +80,6 @@ struct FaceKey {
   }
 };
 FaceKey face_key(Gid a, Gid b, Gid c);
-struct FaceKeyHash {
-  std::size_t operator()(const FaceKey& k) const;
-};
 struct GidHash {  // a mix of all 64 bits (global ids count up in their low bits)
   std::size_t operator()(Gid g) const;
 };
@@ -251,13 +248,19 @@ class Submesh {
   // these records only ever goes to later moves, so it ends at g's holder.
   std::optional<Claim> moved(Gid g, std::uint32_t after) const;
 
-  // M2 here: the store's topology, proxies indexed by their faces.
+  // M2 here: the store's topology, each proxy found from the tet it closes.
   std::vector<std::string> check() const;
 
  private:
   // Adds the vertex if new (p given, with its tag).
   VertexId local_vertex(Gid g, const Point* p, std::uint8_t tag = 0);
   FaceKey key_of(TetId t, int f) const;
+  // The proxy glued to the face of real tet t with key k, or kNoTet. A proxy is found
+  // from the tet it closes, not through an index of faces: the face of a tet that a
+  // migration brings (or that a relink notice names) is that of a tet known by its
+  // global id, and (M2, M3) a proxy names the very tet across its face, since no commit
+  // makes a tet next to a proxy (a cavity and its ring are all real tets here).
+  TetId proxy_on(TetId t, const FaceKey& k) const;
   TetId add_proxy(TetId t, int f, const Side& side);  // glued to face f of real tet t
   void drop_proxy(TetId proxy);
   void claim(TetId proxy, const Claim& c);  // keeps the newer claim
@@ -312,9 +315,11 @@ class Submesh {
   // take(): the tets it takes, and the vertices it has listed (ids too: SlotSet holds any
   // 32-bit id).
   SlotSet taken_, seen_;
-  FlatHashMap<FaceKey, TetId, FaceKeyHash> proxy_at_;
-  FlatHashMap<Gid, Claim, GidHash> moved_;   // tets given away: the latest hand-over;
-                                           // deleted tets another submesh may name
+  // Tets given away: the latest hand-over; deleted tets another submesh may name. A record
+  // stays when its tet comes back (erasing it would cost a probe per arriving tet): it is
+  // read only for a tet that is not here, and the tet's next departure or deletion here
+  // overwrites it first.
+  FlatHashMap<Gid, Claim, GidHash> moved_;
   std::unordered_map<Gid, std::vector<Relink>> waiting_;  // notices about tets on their way
   // M4: labels by the sorted local ids of their vertices, listed at the smallest of them
   // (a vertex on ∂Ω starts a few edges and faces of D; most vertices start none, and the
