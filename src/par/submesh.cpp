@@ -303,10 +303,15 @@ Migration Submesh::take(std::span<const TetId> tets, ActorId to, std::vector<Rel
   Migration m;
   m.from = id_;
   m.to = to;
+  m.tets.reserve(tets.size());
+  m.vertices.reserve(tets.size() + 3);  // a connected set of tets: about one vertex a tet
   collect_labels(tets, m);
-  std::vector<std::pair<TetId, int>> keep_faces;  // kept real tets' faces to close
-  std::vector<Side> keep_sides;
-  std::vector<TetId> drop;
+  std::vector<std::pair<TetId, int>>& keep_faces = keep_faces_;  // kept real tets' faces
+  std::vector<Side>& keep_sides = keep_sides_;                    // to close, and theirs
+  std::vector<TetId>& drop = drop_;
+  keep_faces.clear();
+  keep_sides.clear();
+  drop.clear();
   for (const TetId t : tets) {
     TetRecord r;
     r.gid = slot_[t].gid;
@@ -372,7 +377,8 @@ std::vector<TetId> Submesh::give(const Migration& m) {
   for (const FaceLabel& l : m.face_labels)
     set_face_label(local_vertex(l.v[0], nullptr), local_vertex(l.v[1], nullptr),
                    local_vertex(l.v[2], nullptr), l.label);
-  std::vector<std::pair<FaceKey, HalfFace>> internal;  // faces between two of its tets
+  std::vector<std::pair<FaceKey, HalfFace>>& internal = internal_;  // between two of its tets
+  internal.clear();
   for (std::size_t i = 0; i < m.tets.size(); ++i) {
     const TetId t = ids[i];
     for (int f = 0; f < 4; ++f) {

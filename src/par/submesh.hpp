@@ -315,6 +315,10 @@ class Submesh {
   // take(): the tets it takes, and the vertices it has listed (ids too: SlotSet holds any
   // 32-bit id).
   SlotSet taken_, seen_;
+  std::vector<std::pair<TetId, int>> keep_faces_;  // take()'s buffers, kept for the next
+  std::vector<Side> keep_sides_;
+  std::vector<TetId> drop_;
+  std::vector<std::pair<FaceKey, HalfFace>> internal_;  // give()'s buffer, kept for the next
   // Tets given away: the latest hand-over; deleted tets another submesh may name. A record
   // stays when its tet comes back (erasing it would cost a probe per arriving tet): it is
   // read only for a tet that is not here, and the tet's next departure or deletion here
