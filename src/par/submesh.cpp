@@ -481,12 +481,16 @@ std::vector<std::string> Submesh::check() const {
     }
     ++proxies;
     faces.push_back(key_of(t, 3));
+    // Its side names a tet that is not here (else the face would be glued), and it is
+    // found from the live real tet it closes (a broken link is check_topology's to report).
     const Side* side = side_.find(t);
     const TetId back = store_.neighbour(t, 3);
-    if (side == nullptr || side->tet == kNoGid || store_.is_proxy(back) ||
+    if (side == nullptr || side->tet == kNoGid || find_tet(side->tet) != kNoTet ||
+        back >= store_.slots() || !store_.is_alive(back) || store_.is_proxy(back) ||
         proxy_on(back, faces.back()) != t)
       out.push_back("submesh.proxy: proxy " + std::to_string(t) + " of submesh " +
-                    std::to_string(id_) + " has no side, or is not found from its tet");
+                    std::to_string(id_) + " has no side, names a tet held here, or is not "
+                    "found from its tet");
   }
   std::sort(faces.begin(), faces.end(), [](const FaceKey& a, const FaceKey& b) { return a.v < b.v; });
   if (std::adjacent_find(faces.begin(), faces.end()) != faces.end())

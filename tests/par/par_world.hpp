@@ -132,7 +132,12 @@ inline World cut(std::uint32_t parts, std::uint64_t seed) {
 // M1 and M3 at quiescence; M2 for every submesh.
 inline void expect_same_mesh(const World& w, const std::string& what) {
   std::map<TetKey, Held> tets = original_tets(test::cube_in_cube());
-  std::map<FaceKey, std::vector<ActorId>, bool (*)(const FaceKey&, const FaceKey&)> holders(
+  // Per face of a held tet: the submeshes holding a tet with it, and those tets' ids.
+  struct OnFace {
+    ActorId holder;
+    Gid tet;
+  };
+  std::map<FaceKey, std::vector<OnFace>, bool (*)(const FaceKey&, const FaceKey&)> holders(
       [](const FaceKey& a, const FaceKey& b) { return a.v < b.v; });
   for (const Submesh& s : w.subs) {
     const auto problems = s.check();
@@ -152,7 +157,7 @@ inline void expect_same_mesh(const World& w, const std::string& what) {
         const auto& fv = tables::kFaceVertex[f];
         holders[face_key(g[static_cast<std::size_t>(fv[0])], g[static_cast<std::size_t>(fv[1])],
                          g[static_cast<std::size_t>(fv[2])])]
-            .push_back(s.id());
+            .push_back({s.id(), s.tet_gid(t)});
       }
     }
   }
@@ -164,11 +169,16 @@ inline void expect_same_mesh(const World& w, const std::string& what) {
       const FaceKey k = face_key(s.gid(st.vertex(t, 0)), s.gid(st.vertex(t, 1)), s.gid(st.vertex(t, 2)));
       const auto& h = holders[k];
       ASSERT_EQ(h.size(), 2u) << what << ": a proxy's face is not a face of two tets";
-      const ActorId other = h[0] == s.id() ? h[1] : h[0];
-      EXPECT_NE(other, s.id()) << what << ": a proxy between two tets of one submesh";
-      EXPECT_EQ(s.proxy_side(t).claim.holder, other)
+      const OnFace& other = h[0].holder == s.id() ? h[1] : h[0];
+      EXPECT_NE(other.holder, s.id()) << what << ": a proxy between two tets of one submesh";
+      EXPECT_EQ(s.proxy_side(t).claim.holder, other.holder)
           << what << ": a proxy of submesh " << s.id() << " names " << s.proxy_side(t).claim.holder
           << ", not the holder";
+      // The tet it names is the one across its face (submesh.hpp M3), which give() relies
+      // on to find the proxy from that tet.
+      EXPECT_EQ(s.proxy_side(t).tet, other.tet)
+          << what << ": a proxy of submesh " << s.id() << " names tet " << s.proxy_side(t).tet
+          << ", not the tet across";
     }
   }
 }

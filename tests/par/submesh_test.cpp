@@ -139,7 +139,7 @@ TEST(Submesh, ForwardingRecordsNeverCircle) {
   EXPECT_EQ(w.subs[1].find_tet(g), kNoTet);
   w.subs[1].give(back);
   EXPECT_NE(w.subs[1].find_tet(g), kNoTet);
-  EXPECT_FALSE(w.subs[1].moved(g, 0).has_value());  // back home: no record left
+  EXPECT_FALSE(w.subs[1].moved(g, 0).has_value());  // back home: its record says nothing
 }
 
 // A face's key names it in any vertex order: its ids sorted, and equal keys only for the
