@@ -13,14 +13,15 @@
 // Replacing an older file: the kernel frees the old file's blocks and cached pages when
 // its last link and its last descriptor are gone, which for a plain rename is inside
 // rename(2) (measured: 0.06 s for a 180 MB .ele written a moment before, on top of the
-// 0.08-0.11 s ext4 takes there to start writing back a file that replaces another). So a commit holds the file it replaces (an O_PATH
-// descriptor) across the rename and closes it on a thread of its own: the freeing then
-// runs beside whatever the process does next (the check, the summary), and what is left
-// of it when the process exits, in the exit. Only a regular file of at least 1 MiB with no
-// other link, on a local file system (ext2/3/4, xfs, btrfs, tmpfs, overlayfs) is held:
-// a network or FUSE file system renames a target that is still open out of the way first
-// (NFS's .nfsXXXX files), which would break the rename's atomicity. The rename itself is
-// unchanged; a reader that opened the old file keeps reading it, as before.
+// 0.08-0.11 s ext4 takes there to start writing back a file that replaces another). So a
+// commit holds the file it replaces (an O_PATH descriptor) across the rename and closes
+// it on a thread of its own: the freeing then runs beside whatever the process does next
+// (the check, the summary), and what is left of it when the process exits, in the exit.
+// Only a regular file of at least 1 MiB with no other link, on a local file system
+// (ext2/3/4, xfs, btrfs, tmpfs, overlayfs) is held: a network or FUSE file system renames
+// a target that is still open out of the way first (NFS's .nfsXXXX files), which would
+// break the rename's atomicity. The rename itself is unchanged; a reader that opened the
+// old file keeps reading it, as before.
 #pragma once
 
 #include <cstdint>

@@ -404,10 +404,8 @@ std::vector<TetId> Submesh::give(const Migration& m) {
       if (const Claim* gone = moved_.find(across.tet)) claim(p, *gone);
     }
   }
-  std::sort(internal.begin(), internal.end(), [](const auto& a, const auto& b) {
-    const FaceKey &x = a.first, &y = b.first;  // lexicographic, without a three-way compare
-    return x.v[0] != y.v[0] ? x.v[0] < y.v[0] : x.v[1] != y.v[1] ? x.v[1] < y.v[1] : x.v[2] < y.v[2];
-  });
+  std::sort(internal.begin(), internal.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t i = 0; i < internal.size(); i += 2) {
     if (i + 1 == internal.size() || !(internal[i].first == internal[i + 1].first) ||
         (i + 2 < internal.size() && internal[i + 2].first == internal[i].first))
@@ -492,7 +490,7 @@ std::vector<std::string> Submesh::check() const {
                     std::to_string(id_) + " has no side, names a tet held here, or is not "
                     "found from its tet");
   }
-  std::sort(faces.begin(), faces.end(), [](const FaceKey& a, const FaceKey& b) { return a.v < b.v; });
+  std::sort(faces.begin(), faces.end());
   if (std::adjacent_find(faces.begin(), faces.end()) != faces.end())
     out.push_back("submesh.proxy: two proxies of submesh " + std::to_string(id_) +
                   " close the same face");

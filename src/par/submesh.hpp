@@ -78,6 +78,10 @@ struct FaceKey {
   bool operator==(const FaceKey& o) const {
     return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2];
   }
+  // Lexicographic, inlined (std::array's <=> is a call per compare where keys are sorted).
+  bool operator<(const FaceKey& o) const {
+    return v[0] != o.v[0] ? v[0] < o.v[0] : v[1] != o.v[1] ? v[1] < o.v[1] : v[2] < o.v[2];
+  }
 };
 FaceKey face_key(Gid a, Gid b, Gid c);
 struct GidHash {  // a mix of all 64 bits (global ids count up in their low bits)

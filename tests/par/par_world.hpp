@@ -137,8 +137,7 @@ inline void expect_same_mesh(const World& w, const std::string& what) {
     ActorId holder;
     Gid tet;
   };
-  std::map<FaceKey, std::vector<OnFace>, bool (*)(const FaceKey&, const FaceKey&)> holders(
-      [](const FaceKey& a, const FaceKey& b) { return a.v < b.v; });
+  std::map<FaceKey, std::vector<OnFace>> holders;
   for (const Submesh& s : w.subs) {
     const auto problems = s.check();
     ASSERT_TRUE(problems.empty()) << what << ": submesh " << s.id() << ": " << problems.front();
